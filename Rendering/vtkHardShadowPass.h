@@ -1,0 +1,61 @@
+/**
+ * @class   vtkHardShadowPass
+ * @brief   Plain shadow mapping: one depth map per light, slope-scaled bias,
+ *          optional percentage-closer filtering.
+ *
+ * The baseline every soft technique is compared with (technique `hard`). It
+ * adds nothing to the framework but its PCF kernel: the framework's depth
+ * maps and hard lookup are the technique.
+ *
+ * @sa vtkSoftShadowPass
+ */
+
+#ifndef vtkHardShadowPass_h
+#define vtkHardShadowPass_h
+
+#include "vtkSoftShadowPass.h"
+
+class VTKSOFTSHADOWSRENDERING_EXPORT vtkHardShadowPass : public vtkSoftShadowPass
+{
+public:
+  static vtkHardShadowPass* New();
+  vtkTypeMacro(vtkHardShadowPass, vtkSoftShadowPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Radius in texels of the square PCF kernel: (2r+1)^2 taps, each one
+   * hardware-filtered (2x2 bilinear comparison) when HardwareFiltering is on.
+   * 0 is a single tap. Default 1.
+   */
+  vtkSetClampMacro(PCFRadius, int, 0, 8);
+  vtkGetMacro(PCFRadius, int);
+  ///@}
+
+  ///@{
+  /**
+   * Bilinear comparison filtering in the depth texture (GL_LINEAR with
+   * GL_COMPARE_REF_TO_TEXTURE). Off gives exactly binary visibility per tap.
+   * Default on.
+   */
+  vtkSetMacro(HardwareFiltering, bool);
+  vtkGetMacro(HardwareFiltering, bool);
+  vtkBooleanMacro(HardwareFiltering, bool);
+  ///@}
+
+protected:
+  vtkHardShadowPass();
+  ~vtkHardShadowPass() override;
+
+  bool RenderShadowMaps(const vtkRenderState* s) override;
+  int GetPCFRadius() const override { return this->PCFRadius; }
+
+  int PCFRadius = 1;
+  bool HardwareFiltering = true;
+
+private:
+  vtkHardShadowPass(const vtkHardShadowPass&) = delete;
+  void operator=(const vtkHardShadowPass&) = delete;
+};
+
+#endif

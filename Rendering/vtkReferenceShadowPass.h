@@ -1,0 +1,70 @@
+/**
+ * @class   vtkReferenceShadowPass
+ * @brief   Ground-truth soft shadows: the average of many hard shadow maps
+ *          drawn from points sampled over each light.
+ *
+ * Technique `reference`. For each shadowed light it draws NumberOfSamples
+ * depth maps, from points on a disc of the light's radius perpendicular to
+ * its axis (spot lights) or from directions within its angular radius
+ * (directional lights), and averages their binary visibility per pixel in a
+ * screen-space texture. The samples are stratified (jittered on a grid mapped
+ * to the disc by Shirley's concentric mapping) with a fixed seed, so every run
+ * gives the same image. Radius 0 draws one sample: exactly `hard` without PCF.
+ *
+ * Screen-space visibility belongs to the nearest opaque surface; translucent
+ * surfaces receive the hard shadow of the light's centre.
+ *
+ * Slow by design: NumberOfSamples scene depth passes per light per frame.
+ */
+
+#ifndef vtkReferenceShadowPass_h
+#define vtkReferenceShadowPass_h
+
+#include "vtkSoftShadowPass.h"
+
+#include <memory> // for std::unique_ptr
+
+class VTKSOFTSHADOWSRENDERING_EXPORT vtkReferenceShadowPass : public vtkSoftShadowPass
+{
+public:
+  static vtkReferenceShadowPass* New();
+  vtkTypeMacro(vtkReferenceShadowPass, vtkSoftShadowPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Number of light samples (hard shadow maps) averaged per light. Rounded
+   * down to a square for stratification. Default 256.
+   */
+  vtkSetClampMacro(NumberOfSamples, int, 1, 4096);
+  vtkGetMacro(NumberOfSamples, int);
+  ///@}
+
+  ///@{
+  /**
+   * Seed of the sample jitter. Default 1.
+   */
+  vtkSetMacro(Seed, unsigned int);
+  vtkGetMacro(Seed, unsigned int);
+  ///@}
+
+protected:
+  vtkReferenceShadowPass();
+  ~vtkReferenceShadowPass() override;
+
+  bool RenderShadowMaps(const vtkRenderState* s) override;
+  bool RenderScreenSpace(const vtkRenderState* s) override;
+  bool UsesScreenSpace() const override { return true; }
+
+  int NumberOfSamples = 256;
+  unsigned int Seed = 1;
+
+private:
+  vtkReferenceShadowPass(const vtkReferenceShadowPass&) = delete;
+  void operator=(const vtkReferenceShadowPass&) = delete;
+
+  class vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif

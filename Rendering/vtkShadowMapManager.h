@@ -1,0 +1,115 @@
+/**
+ * @class   vtkShadowMapManager
+ * @brief   Owns every shadowed light's light-space frustum and depth map.
+ *
+ * Private to the framework. Update() decides (which lights cast shadows,
+ * their frusta fitted to the scene), RenderDepth() only draws. Every
+ * technique's first pass is a depth map drawn here; the reference technique
+ * also draws maps from points sampled over the light.
+ */
+
+#ifndef vtkShadowMapManager_h
+#define vtkShadowMapManager_h
+
+#include "vtkSmartPointer.h"
+
+#include <glm/mat4x4.hpp> // for glm::dmat4
+#include <glm/vec3.hpp>   // for glm::dvec3
+
+#include <vector> // for std::vector
+
+class vtkLight;
+class vtkOpenGLCamera;
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLRenderWindow;
+class vtkRenderState;
+class vtkRenderer;
+class vtkSoftShadowPass;
+class vtkTextureObject;
+class vtkWindow;
+
+class vtkShadowMapManager
+{
+public:
+  /// Where a light-space map looks from and what it covers.
+  struct Frustum
+  {
+    glm::dvec3 Eye{ 0.0 };
+    glm::dvec3 Direction{ 0.0, 0.0, -1.0 }; ///< unit, from the light into the scene
+    glm::dvec3 Up{ 0.0, 1.0, 0.0 };
+    bool Parallel = false;
+    double Near = 0.1;
+    double Far = 1.0;
+    glm::dmat4 View{ 1.0 };       ///< world to light eye coordinates
+    glm::dmat4 Projection{ 1.0 }; ///< light eye to clip coordinates
+    glm::dmat4 WorldToMap{ 1.0 }; ///< world to [0,1]^3 map coordinates
+  };
+
+  /// One shadowed light.
+  struct Light
+  {
+    vtkLight* Source = nullptr; ///< not owned; valid during a frame
+    int SceneIndex = -1;        ///< index in the renderer's light collection
+    int ShaderIndex = -1;       ///< N in the mappers' lightColorN uniforms
+    bool Directional = false;
+    double Radius = 0.0;        ///< world units, or degrees for directional lights
+    double ConeAngle = 0.0;     ///< half-angle in degrees (spot lights)
+    double Attenuation = 1.0;   ///< vtkLight::GetShadowAttenuation()
+    glm::dvec3 Position{ 0.0 }; ///< world; for directional lights a point on the axis
+    glm::dvec3 Direction{ 0.0, 0.0, -1.0 };
+    Frustum Map;                ///< the light's own (centre) frustum
+    vtkSmartPointer<vtkTextureObject> DepthMap;
+  };
+
+  vtkShadowMapManager();
+  ~vtkShadowMapManager();
+
+  /**
+   * Collect the lights that cast shadows and fit their frusta to the bounds of
+   * the visible props. Returns the number of shadowed lights. Lights that
+   * cannot cast shadows yet (point lights) are returned in `unsupported`.
+   */
+  int Update(vtkRenderer* renderer, std::vector<vtkLight*>* unsupported = nullptr);
+
+  std::vector<Light>& GetLights() { return this->Lights; }
+  const double* GetSceneBounds() const { return this->SceneBounds; }
+
+  /**
+   * The frustum of `light` seen from `eye` along `direction` (a sample of an
+   * area light): perspective for spot lights, orthographic around the scene
+   * for directional ones.
+   */
+  Frustum FitFrustum(const Light& light, const glm::dvec3& eye, const glm::dvec3& direction) const;
+
+  /**
+   * Make sure `light.DepthMap` is a `size` x `size` depth texture with
+   * hardware comparison (sampler2DShadow, bilinear PCF).
+   */
+  void AllocateDepthMap(vtkOpenGLRenderWindow* context, Light& light, int size);
+
+  /**
+   * Draw the depth of every visible opaque prop, as seen through `frustum`,
+   * into `target` (a depth texture). Slope-scaled bias is applied.
+   */
+  bool RenderDepth(const vtkRenderState* s, vtkSoftShadowPass* pass, const Frustum& frustum,
+    vtkTextureObject* target);
+
+  /**
+   * Draw the depth of the props of `s` through the renderer's own camera into
+   * `target` (sized as the renderer's viewport). No bias.
+   */
+  bool RenderCameraDepth(const vtkRenderState* s, vtkSoftShadowPass* pass, vtkTextureObject* target);
+
+  void ReleaseGraphicsResources(vtkWindow* w);
+
+private:
+  bool DrawDepth(const vtkRenderState* s, vtkSoftShadowPass* pass, vtkTextureObject* target,
+    bool allProps, bool bias);
+
+  std::vector<Light> Lights;
+  double SceneBounds[6];
+  vtkSmartPointer<vtkOpenGLCamera> LightCamera;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> DepthFramebuffer;
+};
+
+#endif

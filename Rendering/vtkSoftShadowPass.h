@@ -1,0 +1,199 @@
+/**
+ * @class   vtkSoftShadowPass
+ * @brief   Base of every shadow technique: renders a scene with each shadowed
+ *          light's visibility injected into the actors' shaders.
+ *
+ * Set a subclass on a renderer with vtkRenderer::SetPass(). Every frame,
+ * Render() runs the same steps for every technique:
+ *
+ *  1. decide which lights cast shadows and fit their light-space frusta
+ *     (spot: perspective; directional: orthographic around the scene),
+ *  2. RenderShadowMaps(): the technique draws its light-space maps,
+ *  3. RenderScreenSpace(): optional screen-space passes over the camera depth,
+ *  4. the scene is drawn through the DelegatePass (opaque, translucent,
+ *     volumes, overlay) while this pass, registered on every prop, injects
+ *     `vtkShadowFactorN` into the fragment shader of each
+ *     vtkOpenGLPolyDataMapper and scales light N's diffuse and specular
+ *     (Phong) or radiance (PBR) with it.
+ *
+ * A light casts shadows when it is switched on, is not a headlight, and is
+ * directional or a spot light (cone angle < 90). Point lights are not handled
+ * yet: they are reported once with an error and drawn unshadowed.
+ *
+ * The light's size comes from SetRadius()/GetRadius(), stored in the light's
+ * information like vtkOSPRayLightNode does: world units for spot and point
+ * lights, angular radius in degrees for directional lights. 0 is a point
+ * light. vtkLight::GetShadowAttenuation() is honoured as in vtkShadowMapPass.
+ *
+ * ShadowOnlyLight >= 0 replaces each fragment's colour with the raw visibility
+ * of that light (index in the renderer's light collection): 1 lit, 0 umbra.
+ * It is what quality is measured on.
+ */
+
+#ifndef vtkSoftShadowPass_h
+#define vtkSoftShadowPass_h
+
+#include "vtkOpenGLRenderPass.h"
+#include "vtkSoftShadowsRenderingModule.h" // for export macro
+
+#include <memory> // for std::unique_ptr
+#include <string> // for std::string
+
+class vtkInformationDoubleKey;
+class vtkLight;
+class vtkOpenGLRenderWindow;
+class vtkRenderer;
+class vtkShadowMapManager;
+class vtkShadowScreenBuffers;
+
+class VTKSOFTSHADOWSRENDERING_EXPORT vtkSoftShadowPass : public vtkOpenGLRenderPass
+{
+public:
+  vtkTypeMacro(vtkSoftShadowPass, vtkOpenGLRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Size of a light, read by every technique. World units for spot and point
+   * lights; angular radius in degrees for directional lights. Default 0.
+   */
+  static vtkInformationDoubleKey* RADIUS();
+  static void SetRadius(double radius, vtkLight* light);
+  static double GetRadius(vtkLight* light);
+  ///@}
+
+  ///@{
+  /**
+   * Width and height of each light's square shadow map in texels.
+   * Default 1024.
+   */
+  vtkSetClampMacro(MapSize, int, 16, 16384);
+  vtkGetMacro(MapSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * Slope-scaled and constant depth offsets applied while drawing shadow maps
+   * (glPolygonOffset factor and units). Defaults 2.0 and 4.0.
+   */
+  vtkSetMacro(SlopeScaledBias, double);
+  vtkGetMacro(SlopeScaledBias, double);
+  vtkSetMacro(ConstantBias, double);
+  vtkGetMacro(ConstantBias, double);
+  ///@}
+
+  ///@{
+  /**
+   * When >= 0, draw the visibility of this light (index in the renderer's
+   * light collection) instead of the shaded colour. Default -1 (off).
+   */
+  vtkSetMacro(ShadowOnlyLight, int);
+  vtkGetMacro(ShadowOnlyLight, int);
+  ///@}
+
+  ///@{
+  /**
+   * The pass that draws the scene once the shadow term is in place.
+   * Default: camera, lights, opaque, translucent, volumes and overlay
+   * (a vtkRenderStepsPass).
+   */
+  void SetDelegatePass(vtkRenderPass* pass);
+  vtkGetObjectMacro(DelegatePass, vtkRenderPass);
+  ///@}
+
+  /**
+   * Number of lights that cast a shadow in the last frame.
+   */
+  int GetNumberOfShadowedLights() const;
+
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject* vao = nullptr) override;
+  vtkMTimeType GetShaderStageMTime() override;
+
+protected:
+  vtkSoftShadowPass();
+  ~vtkSoftShadowPass() override;
+
+  /**
+   * Step 2: draw the light-space maps of every shadowed light
+   * (this->Maps). Return false on failure: the frame is then drawn unshadowed.
+   */
+  virtual bool RenderShadowMaps(const vtkRenderState* s) = 0;
+
+  /**
+   * Step 3, optional: screen-space passes. Techniques that override it return
+   * true from UsesScreenSpace() and write one visibility texture per light in
+   * this->Screen. Default: nothing.
+   */
+  virtual bool RenderScreenSpace(const vtkRenderState*) { return true; }
+  virtual bool UsesScreenSpace() const { return false; }
+
+  /**
+   * GLSL declarations the technique adds to receivers' fragment shaders,
+   * after the framework's own (vtkSoftShadowReceiverFS.glsl). Default: none.
+   */
+  virtual std::string GetVisibilityDeclarations() { return std::string(); }
+
+  /**
+   * GLSL expression for the visibility (1 lit, 0 umbra) of shadowed light
+   * `slot` at `vtkShadowPositionWC`. Default: the framework's hard lookup in
+   * the light's depth map with GetPCFRadius(), or, when UsesScreenSpace(),
+   * the light's screen-space visibility texture.
+   */
+  virtual std::string GetVisibilityExpression(int slot);
+
+  /**
+   * Upload the technique's own uniforms to a receiver's program.
+   */
+  virtual void SetVisibilityUniforms(vtkShaderProgram*) {}
+
+  /**
+   * Radius, in texels, of the square PCF kernel the framework's hard lookup
+   * uses in receivers (0: one hardware-filtered tap).
+   */
+  virtual int GetPCFRadius() const { return 0; }
+
+  /**
+   * Shader stage changes force mappers to rebuild their shader source.
+   */
+  enum class Stage
+  {
+    Idle,
+    LightDepth, ///< drawing depth from a light or the camera: no shading
+    Receivers   ///< final drawing with the shadow term
+  };
+  void SetStage(Stage stage);
+  Stage GetStage() const { return this->CurrentStage; }
+
+  int MapSize = 1024;
+  double SlopeScaledBias = 2.0;
+  double ConstantBias = 4.0;
+  int ShadowOnlyLight = -1;
+  vtkRenderPass* DelegatePass = nullptr;
+
+  std::unique_ptr<vtkShadowMapManager> Maps;
+  std::unique_ptr<vtkShadowScreenBuffers> Screen;
+
+private:
+  vtkSoftShadowPass(const vtkSoftShadowPass&) = delete;
+  void operator=(const vtkSoftShadowPass&) = delete;
+
+  friend class vtkShadowMapManager;
+  friend class vtkShadowScreenBuffers;
+
+  void ReportUnsupportedLights(vtkRenderer* renderer);
+
+  Stage CurrentStage = Stage::Idle;
+  vtkTimeStamp StageTime;
+  std::string ShaderHeaderCache;
+  bool PointLightReported = false;
+};
+
+#endif
