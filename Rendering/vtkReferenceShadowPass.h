@@ -30,6 +30,7 @@ public:
   static vtkReferenceShadowPass* New();
   vtkTypeMacro(vtkReferenceShadowPass, vtkSoftShadowPass);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
 
   ///@{
   /**

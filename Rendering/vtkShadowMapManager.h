@@ -72,6 +72,8 @@ public:
   int Update(vtkRenderer* renderer, std::vector<vtkLight*>* unsupported = nullptr);
 
   std::vector<Light>& GetLights() { return this->Lights; }
+  const std::vector<Light>& GetLights() const { return this->Lights; }
+  vtkRenderer* GetRenderer() const { return this->Renderer; }
   const double* GetSceneBounds() const { return this->SceneBounds; }
 
   /**
@@ -83,9 +85,10 @@ public:
 
   /**
    * Make sure `light.DepthMap` is a `size` x `size` depth texture with
-   * hardware comparison (sampler2DShadow, bilinear PCF).
+   * hardware comparison (sampler2DShadow), filtered bilinearly (2x2 PCF in
+   * one tap) when `linear`.
    */
-  void AllocateDepthMap(vtkOpenGLRenderWindow* context, Light& light, int size);
+  void AllocateDepthMap(vtkOpenGLRenderWindow* context, Light& light, int size, bool linear);
 
   /**
    * Draw the depth of every visible opaque prop, as seen through `frustum`,
@@ -106,6 +109,7 @@ private:
   bool DrawDepth(const vtkRenderState* s, vtkSoftShadowPass* pass, vtkTextureObject* target,
     bool allProps, bool bias);
 
+  vtkRenderer* Renderer = nullptr; ///< of the last Update(), not owned
   std::vector<Light> Lights;
   double SceneBounds[6];
   vtkSmartPointer<vtkOpenGLCamera> LightCamera;

@@ -74,7 +74,9 @@ public:
   ///@{
   /**
    * Slope-scaled and constant depth offsets applied while drawing shadow maps
-   * (glPolygonOffset factor and units). Defaults 2.0 and 4.0.
+   * (glPolygonOffset factor and units). The slope term is multiplied by
+   * (1 + PCF radius): wider kernels compare farther from the looked-up point.
+   * Defaults 2.0 and 4.0.
    */
   vtkSetMacro(SlopeScaledBias, double);
   vtkGetMacro(SlopeScaledBias, double);
@@ -126,6 +128,12 @@ protected:
    * (this->Maps). Return false on failure: the frame is then drawn unshadowed.
    */
   virtual bool RenderShadowMaps(const vtkRenderState* s) = 0;
+
+  /**
+   * Helper for RenderShadowMaps(): draw every shadowed light's own depth map
+   * at MapSize, filtered bilinearly by the hardware when `linear`.
+   */
+  bool RenderLightDepthMaps(const vtkRenderState* s, bool linear);
 
   /**
    * Step 3, optional: screen-space passes. Techniques that override it return
@@ -188,11 +196,8 @@ private:
   friend class vtkShadowMapManager;
   friend class vtkShadowScreenBuffers;
 
-  void ReportUnsupportedLights(vtkRenderer* renderer);
-
   Stage CurrentStage = Stage::Idle;
   vtkTimeStamp StageTime;
-  std::string ShaderHeaderCache;
   bool PointLightReported = false;
 };
 

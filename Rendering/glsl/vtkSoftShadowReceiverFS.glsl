@@ -1,0 +1,58 @@
+// Shadow term of the receivers' fragment shaders, shared by every technique.
+// Inserted by vtkSoftShadowPass after VTK_SHADOW_LIGHTS (number of shadowed
+// lights) and, for screen-space techniques, VTK_SHADOW_SCREEN_SPACE are
+// defined. Arrays are indexed with constants only (GLSL 1.50 samplers).
+
+uniform mat4 vtkShadowViewToWorld;
+uniform mat4 vtkShadowWorldToMap[VTK_SHADOW_LIGHTS];
+uniform float vtkShadowAttenuation[VTK_SHADOW_LIGHTS];
+uniform sampler2DShadow vtkShadowMap[VTK_SHADOW_LIGHTS];
+uniform float vtkShadowMapTexel;
+uniform int vtkShadowPCFRadius;
+
+// Hard shadow: fraction of the (2r+1)^2 depth comparisons that pass around
+// the point's projection in the light's map. Outside the map is lit.
+float vtkShadowLookup(sampler2DShadow map, mat4 worldToMap, vec4 positionWC, int radius)
+{
+  vec4 p = worldToMap * positionWC;
+  if (p.w <= 0.0)
+  {
+    return 1.0;
+  }
+  p.xyz /= p.w;
+  if (any(lessThan(p.xyz, vec3(0.0))) || any(greaterThan(p.xyz, vec3(1.0))))
+  {
+    return 1.0;
+  }
+  float lit = 0.0;
+  for (int y = -radius; y <= radius; ++y)
+  {
+    for (int x = -radius; x <= radius; ++x)
+    {
+      lit += texture(map, vec3(p.xy + vec2(x, y) * vtkShadowMapTexel, p.z));
+    }
+  }
+  float taps = float((2 * radius + 1) * (2 * radius + 1));
+  return lit / taps;
+}
+
+#ifdef VTK_SHADOW_SCREEN_SPACE
+uniform sampler2D vtkShadowScreen[VTK_SHADOW_LIGHTS];
+uniform sampler2D vtkShadowCameraDepth;
+uniform vec2 vtkShadowViewportOrigin;
+
+// Screen-space visibility belongs to the nearest opaque surface, which the
+// camera depth pre-pass saw. Other fragments (translucent ones) take the
+// hard shadow of the light's own map.
+float vtkShadowScreenVisibility(
+  sampler2D screen, sampler2DShadow map, mat4 worldToMap, vec4 positionWC)
+{
+  ivec2 pixel = ivec2(gl_FragCoord.xy - vtkShadowViewportOrigin);
+  float depth = texelFetch(vtkShadowCameraDepth, pixel, 0).r;
+  if (abs(depth - gl_FragCoord.z) <= 1.0e-5)
+  {
+    return texelFetch(screen, pixel, 0).r;
+  }
+  return vtkShadowLookup(map, worldToMap, positionWC, 0);
+}
+#endif

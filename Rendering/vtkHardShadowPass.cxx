@@ -1,0 +1,22 @@
+#include "vtkHardShadowPass.h"
+
+#include "vtkObjectFactory.h"
+
+vtkStandardNewMacro(vtkHardShadowPass);
+
+vtkHardShadowPass::vtkHardShadowPass() = default;
+vtkHardShadowPass::~vtkHardShadowPass() = default;
+
+//------------------------------------------------------------------------------
+bool vtkHardShadowPass::RenderShadowMaps(const vtkRenderState* s)
+{
+  return this->RenderLightDepthMaps(s, this->HardwareFiltering);
+}
+
+//------------------------------------------------------------------------------
+void vtkHardShadowPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "PCFRadius: " << this->PCFRadius << "\n";
+  os << indent << "HardwareFiltering: " << this->HardwareFiltering << "\n";
+}

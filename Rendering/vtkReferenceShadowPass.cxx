@@ -1,0 +1,189 @@
+#include "vtkReferenceShadowPass.h"
+
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkShadowMapManager.h"
+#include "vtkShadowScreenBuffers.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include "vtkShadowAccumulateFS.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/trigonometric.hpp>
+#include <glm/vec2.hpp>
+
+#include <cmath>
+#include <random>
+
+namespace
+{
+// Shirley & Chiu's concentric mapping: uniform square to uniform disc with
+// low distortion, so stratification survives.
+glm::dvec2 ConcentricDisc(double u, double v)
+{
+  const double a = 2.0 * u - 1.0, b = 2.0 * v - 1.0;
+  if (a == 0.0 && b == 0.0)
+  {
+    return glm::dvec2(0.0);
+  }
+  const double quarterPi = 0.25 * glm::pi<double>();
+  if (std::abs(a) > std::abs(b))
+  {
+    return a * glm::dvec2(std::cos(quarterPi * b / a), std::sin(quarterPi * b / a));
+  }
+  return b * glm::dvec2(std::sin(quarterPi * a / b), std::cos(quarterPi * a / b));
+}
+
+// Jittered k x k stratification of the unit disc, from a fixed seed. The
+// generator's raw output is mapped by hand: std distributions differ between
+// standard libraries, and the reference must not.
+std::vector<glm::dvec2> DiscSamples(int count, unsigned int seed)
+{
+  const int k = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(count))));
+  if (k == 1)
+  {
+    return { glm::dvec2(0.0) };
+  }
+  std::mt19937 generator(seed);
+  auto uniform = [&generator]() { return (generator() >> 8) * (1.0 / 16777216.0); };
+  std::vector<glm::dvec2> samples;
+  samples.reserve(static_cast<size_t>(k) * k);
+  for (int j = 0; j < k; ++j)
+  {
+    for (int i = 0; i < k; ++i)
+    {
+      const double u = (i + uniform()) / k;
+      const double v = (j + uniform()) / k;
+      samples.push_back(ConcentricDisc(u, v));
+    }
+  }
+  return samples;
+}
+
+void Basis(const glm::dvec3& axis, glm::dvec3& e1, glm::dvec3& e2)
+{
+  const glm::dvec3 helper =
+    std::abs(axis.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0);
+  e1 = glm::normalize(glm::cross(axis, helper));
+  e2 = glm::cross(axis, e1);
+}
+}
+
+class vtkReferenceShadowPass::vtkInternals
+{
+public:
+  std::unique_ptr<vtkOpenGLQuadHelper> Accumulate;
+  vtkShadowMapManager::Light Sample; // owns the scratch map of one light sample
+};
+
+vtkStandardNewMacro(vtkReferenceShadowPass);
+
+//------------------------------------------------------------------------------
+vtkReferenceShadowPass::vtkReferenceShadowPass()
+  : Internals(new vtkInternals)
+{
+}
+
+vtkReferenceShadowPass::~vtkReferenceShadowPass() = default;
+
+//------------------------------------------------------------------------------
+bool vtkReferenceShadowPass::RenderShadowMaps(const vtkRenderState* s)
+{
+  // The light's own map serves the fragments screen space cannot (translucent).
+  return this->RenderLightDepthMaps(s, false);
+}
+
+//------------------------------------------------------------------------------
+bool vtkReferenceShadowPass::RenderScreenSpace(const vtkRenderState* s)
+{
+  auto* context = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
+  vtkOpenGLState* state = context->GetState();
+  vtkInternals& internals = *this->Internals;
+  if (!internals.Accumulate || internals.Accumulate->Program == nullptr)
+  {
+    internals.Accumulate = this->Screen->CreateQuad(context, vtkShadowAccumulateFS);
+    if (!internals.Accumulate->Program)
+    {
+      vtkErrorMacro("Could not build the accumulation shader.");
+      return false;
+    }
+  }
+  this->Maps->AllocateDepthMap(context, internals.Sample, this->MapSize, false);
+  vtkTextureObject* sampleMap = internals.Sample.DepthMap;
+
+  auto& lights = this->Maps->GetLights();
+  for (size_t slot = 0; slot < lights.size(); ++slot)
+  {
+    const auto& light = lights[slot];
+    const auto disc = DiscSamples(light.Radius > 0.0 ? this->NumberOfSamples : 1, this->Seed);
+    const float weight = 1.0f / static_cast<float>(disc.size());
+    glm::dvec3 e1, e2;
+    Basis(light.Direction, e1, e2);
+
+    this->Screen->BeginVisibility(static_cast<int>(slot), 0.0f);
+    for (const auto& d : disc)
+    {
+      // Spot: points on a disc of `radius` across the axis. Directional:
+      // directions within the angular radius.
+      glm::dvec3 eye = light.Position;
+      glm::dvec3 direction = light.Direction;
+      if (light.Directional)
+      {
+        const double spread = std::tan(glm::radians(light.Radius));
+        direction = glm::normalize(light.Direction + spread * (d.x * e1 + d.y * e2));
+      }
+      else
+      {
+        eye += light.Radius * (d.x * e1 + d.y * e2);
+      }
+      const auto frustum = this->Maps->FitFrustum(light, eye, direction);
+      if (!this->Maps->RenderDepth(s, this, frustum, sampleMap))
+      {
+        this->Screen->EndVisibility();
+        return false;
+      }
+
+      vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
+      vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(state);
+      state->vtkglEnable(GL_BLEND);
+      state->vtkglBlendFunc(GL_ONE, GL_ONE);
+      sampleMap->Activate();
+      this->Screen->DrawQuad(internals.Accumulate.get(), [&](vtkShaderProgram* program) {
+        const glm::mat4 worldToMap(frustum.WorldToMap);
+        program->SetUniformi("sampleMap", sampleMap->GetTextureUnit());
+        program->SetUniformMatrix4x4("sampleWorldToMap", const_cast<float*>(glm::value_ptr(worldToMap)));
+        program->SetUniformf("sampleWeight", weight);
+      });
+      sampleMap->Deactivate();
+    }
+    this->Screen->EndVisibility();
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkReferenceShadowPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  this->Superclass::ReleaseGraphicsResources(w);
+  this->Internals->Accumulate.reset();
+  if (this->Internals->Sample.DepthMap)
+  {
+    this->Internals->Sample.DepthMap->ReleaseGraphicsResources(w);
+    this->Internals->Sample.DepthMap = nullptr;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkReferenceShadowPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfSamples: " << this->NumberOfSamples << "\n";
+  os << indent << "Seed: " << this->Seed << "\n";
+}

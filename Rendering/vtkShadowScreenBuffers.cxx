@@ -1,0 +1,191 @@
+#include "vtkShadowScreenBuffers.h"
+
+#include "vtkCamera.h"
+#include "vtkMatrix4x4.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderUtilities.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkShadowMapManager.h"
+#include "vtkSoftShadowPass.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include "vtkShadowScreenCommonFS.h"
+
+#include <string>
+
+vtkShadowScreenBuffers::vtkShadowScreenBuffers() = default;
+vtkShadowScreenBuffers::~vtkShadowScreenBuffers() = default;
+
+//------------------------------------------------------------------------------
+bool vtkShadowScreenBuffers::RenderCameraDepth(const vtkRenderState* s, vtkSoftShadowPass* pass)
+{
+  vtkRenderer* renderer = s->GetRenderer();
+  auto* context = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  if (!context)
+  {
+    return false;
+  }
+  if (context != this->Context)
+  {
+    this->ReleaseGraphicsResources(this->Context);
+    this->Context = context;
+  }
+  renderer->GetTiledSizeAndOrigin(&this->Width, &this->Height, this->Origin, this->Origin + 1);
+
+  if (!this->CameraDepth)
+  {
+    this->CameraDepth = vtkSmartPointer<vtkTextureObject>::New();
+    this->CameraDepth->SetContext(context);
+    this->CameraDepth->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->CameraDepth->SetMagnificationFilter(vtkTextureObject::Nearest);
+    this->CameraDepth->SetWrapS(vtkTextureObject::ClampToEdge);
+    this->CameraDepth->SetWrapT(vtkTextureObject::ClampToEdge);
+    this->CameraDepth->AllocateDepth(this->Width, this->Height, vtkTextureObject::Float32);
+  }
+  this->CameraDepth->Resize(this->Width, this->Height);
+  for (auto& texture : this->Visibility)
+  {
+    texture->Resize(this->Width, this->Height);
+  }
+
+  // Clip to world for this frame's camera and aspect ratio.
+  vtkCamera* camera = renderer->GetActiveCamera();
+  vtkNew<vtkMatrix4x4> clipToWorld;
+  vtkMatrix4x4::Multiply4x4(
+    camera->GetProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1, 1),
+    camera->GetModelViewTransformMatrix(), clipToWorld);
+  clipToWorld->Invert();
+  for (int row = 0; row < 4; ++row)
+  {
+    for (int col = 0; col < 4; ++col)
+    {
+      this->ClipToWorld[col * 4 + row] = static_cast<float>(clipToWorld->GetElement(row, col));
+    }
+  }
+  return pass->Maps->RenderCameraDepth(s, pass, this->CameraDepth);
+}
+
+//------------------------------------------------------------------------------
+std::unique_ptr<vtkOpenGLQuadHelper> vtkShadowScreenBuffers::CreateQuad(
+  vtkOpenGLRenderWindow* context, const std::string& fragmentSource) const
+{
+  const std::string fs = std::string(vtkShadowScreenCommonFS) + "\n" + fragmentSource;
+  return std::unique_ptr<vtkOpenGLQuadHelper>(new vtkOpenGLQuadHelper(
+    context, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fs.c_str(), ""));
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenBuffers::DrawQuad(
+  vtkOpenGLQuadHelper* quad, const std::function<void(vtkShaderProgram*)>& setUniforms)
+{
+  vtkOpenGLState* state = this->Context->GetState();
+  vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  this->Context->GetShaderCache()->ReadyShaderProgram(quad->Program);
+  this->CameraDepth->Activate();
+  quad->Program->SetUniformi("vtkScreenDepth", this->CameraDepth->GetTextureUnit());
+  quad->Program->SetUniformMatrix4x4("vtkScreenClipToWorld", this->ClipToWorld);
+  setUniforms(quad->Program);
+  quad->Render();
+  this->CameraDepth->Deactivate();
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenBuffers::BeginVisibility(int slot, float clear)
+{
+  while (static_cast<int>(this->Visibility.size()) <= slot)
+  {
+    auto texture = vtkSmartPointer<vtkTextureObject>::New();
+    texture->SetContext(this->Context);
+    texture->SetMinificationFilter(vtkTextureObject::Nearest);
+    texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    texture->SetWrapS(vtkTextureObject::ClampToEdge);
+    texture->SetWrapT(vtkTextureObject::ClampToEdge);
+    texture->SetInternalFormat(GL_R32F);
+    texture->SetFormat(GL_RED);
+    texture->SetDataType(GL_FLOAT);
+    texture->Allocate2D(this->Width, this->Height, 1, VTK_FLOAT);
+    this->Visibility.push_back(texture);
+  }
+  if (!this->Framebuffer)
+  {
+    this->Framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    this->Framebuffer->SetContext(this->Context);
+  }
+  vtkOpenGLState* state = this->Context->GetState();
+  state->PushFramebufferBindings();
+  this->Framebuffer->Bind();
+  this->Framebuffer->AddColorAttachment(0, this->Visibility[slot]);
+  this->Framebuffer->ActivateDrawBuffers(1);
+  state->vtkglViewport(0, 0, this->Width, this->Height);
+  state->vtkglScissor(0, 0, this->Width, this->Height);
+  state->vtkglClearColor(clear, clear, clear, clear);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT);
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenBuffers::EndVisibility()
+{
+  this->Framebuffer->RemoveColorAttachment(0);
+  this->Context->GetState()->PopFramebufferBindings();
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenBuffers::ActivateTextures()
+{
+  this->CameraDepth->Activate();
+  for (auto& texture : this->Visibility)
+  {
+    texture->Activate();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenBuffers::DeactivateTextures()
+{
+  this->CameraDepth->Deactivate();
+  for (auto& texture : this->Visibility)
+  {
+    texture->Deactivate();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenBuffers::SetUniforms(vtkShaderProgram* program, int numberOfLights) const
+{
+  program->SetUniformi("vtkShadowCameraDepth", this->CameraDepth->GetTextureUnit());
+  float origin[2] = { static_cast<float>(this->Origin[0]), static_cast<float>(this->Origin[1]) };
+  program->SetUniform2f("vtkShadowViewportOrigin", origin);
+  for (int i = 0; i < numberOfLights && i < static_cast<int>(this->Visibility.size()); ++i)
+  {
+    const std::string name = "vtkShadowScreen[" + std::to_string(i) + "]";
+    program->SetUniformi(name.c_str(), this->Visibility[i]->GetTextureUnit());
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenBuffers::ReleaseGraphicsResources(vtkWindow* w)
+{
+  if (this->CameraDepth)
+  {
+    this->CameraDepth->ReleaseGraphicsResources(w);
+  }
+  for (auto& texture : this->Visibility)
+  {
+    texture->ReleaseGraphicsResources(w);
+  }
+  if (this->Framebuffer)
+  {
+    this->Framebuffer->ReleaseGraphicsResources(w);
+  }
+  this->CameraDepth = nullptr;
+  this->Visibility.clear();
+  this->Framebuffer = nullptr;
+}

@@ -1,0 +1,89 @@
+/**
+ * @class   vtkShadowScreenBuffers
+ * @brief   Screen-space side of the framework: the camera depth pre-pass,
+ *          one visibility texture per shadowed light, and full-screen passes
+ *          that reconstruct each pixel's world position.
+ *
+ * Private to the framework. A technique's screen-space pass is a fragment
+ * shader body given to CreateQuad(); it gets `vtkScreenDepth`,
+ * `vtkScreenPixel()` and `vtkScreenPositionWC()` from
+ * vtkShadowScreenCommonFS.glsl. Receivers read the visibility textures back
+ * in vtkSoftShadowReceiverFS.glsl.
+ */
+
+#ifndef vtkShadowScreenBuffers_h
+#define vtkShadowScreenBuffers_h
+
+#include "vtkSmartPointer.h"
+
+#include <functional> // for std::function
+#include <memory>     // for std::unique_ptr
+#include <string> // for std::string
+#include <vector> // for std::vector
+
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkRenderState;
+class vtkShaderProgram;
+class vtkSoftShadowPass;
+class vtkTextureObject;
+class vtkWindow;
+
+class vtkShadowScreenBuffers
+{
+public:
+  vtkShadowScreenBuffers();
+  ~vtkShadowScreenBuffers();
+
+  /**
+   * Size the buffers to the renderer's viewport and draw the depth of its
+   * opaque props through its camera.
+   */
+  bool RenderCameraDepth(const vtkRenderState* s, vtkSoftShadowPass* pass);
+
+  int GetWidth() const { return this->Width; }
+  int GetHeight() const { return this->Height; }
+
+  /**
+   * A full-screen pass whose fragment shader is the common screen-space
+   * declarations followed by `fragmentSource` (which defines main()).
+   */
+  std::unique_ptr<vtkOpenGLQuadHelper> CreateQuad(
+    vtkOpenGLRenderWindow* context, const std::string& fragmentSource) const;
+
+  /**
+   * Draw a CreateQuad() pass over the current target: binds the camera depth,
+   * uploads the reconstruction matrix, then lets `setUniforms` add the pass's
+   * own. Depth test is off while it draws.
+   */
+  void DrawQuad(vtkOpenGLQuadHelper* quad, const std::function<void(vtkShaderProgram*)>& setUniforms);
+
+  /**
+   * Draw into light `slot`'s visibility texture (allocated on demand,
+   * single-channel float, viewport-sized). Clears it to `clear` first.
+   */
+  void BeginVisibility(int slot, float clear);
+  void EndVisibility();
+
+  ///@{
+  /** Receivers: bind the textures and upload their uniforms. */
+  void ActivateTextures();
+  void DeactivateTextures();
+  void SetUniforms(vtkShaderProgram* program, int numberOfLights) const;
+  ///@}
+
+  void ReleaseGraphicsResources(vtkWindow* w);
+
+private:
+  vtkOpenGLRenderWindow* Context = nullptr;
+  int Width = 0;
+  int Height = 0;
+  int Origin[2] = { 0, 0 };
+  float ClipToWorld[16];
+  vtkSmartPointer<vtkTextureObject> CameraDepth;
+  std::vector<vtkSmartPointer<vtkTextureObject>> Visibility;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
+};
+
+#endif

@@ -1,0 +1,381 @@
+#include "vtkSoftShadowPass.h"
+
+#include "vtkCamera.h"
+#include "vtkInformation.h"
+#include "vtkInformationDoubleKey.h"
+#include "vtkLight.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkRenderState.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkShaderProgram.h"
+#include "vtkShadowMapManager.h"
+#include "vtkShadowScreenBuffers.h"
+#include "vtkTextureObject.h"
+
+#include "vtkSoftShadowReceiverFS.h"
+
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/mat4x4.hpp>
+
+#include <sstream>
+
+vtkInformationKeyMacro(vtkSoftShadowPass, RADIUS, Double);
+
+namespace
+{
+glm::dmat4 ToGlm(vtkMatrix4x4* m)
+{
+  glm::dmat4 result;
+  for (int row = 0; row < 4; ++row)
+  {
+    for (int col = 0; col < 4; ++col)
+    {
+      result[col][row] = m->GetElement(row, col);
+    }
+  }
+  return result;
+}
+
+void SetMatrix(vtkShaderProgram* program, const std::string& name, const glm::dmat4& m)
+{
+  glm::mat4 single(m);
+  program->SetUniformMatrix4x4(name.c_str(), glm::value_ptr(single));
+}
+
+std::string Indexed(const char* name, int i)
+{
+  return std::string(name) + "[" + std::to_string(i) + "]";
+}
+}
+
+//------------------------------------------------------------------------------
+vtkSoftShadowPass::vtkSoftShadowPass()
+  : Maps(new vtkShadowMapManager)
+  , Screen(new vtkShadowScreenBuffers)
+{
+  vtkNew<vtkRenderStepsPass> steps;
+  this->SetDelegatePass(steps);
+}
+
+//------------------------------------------------------------------------------
+vtkSoftShadowPass::~vtkSoftShadowPass()
+{
+  this->SetDelegatePass(nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkSoftShadowPass::SetRadius(double radius, vtkLight* light)
+{
+  if (!light)
+  {
+    return;
+  }
+  if (!(radius >= 0.0)) // also rejects NaN
+  {
+    vtkGenericWarningMacro("vtkSoftShadowPass::SetRadius: radius must be >= 0, got " << radius);
+    return;
+  }
+  light->GetInformation()->Set(vtkSoftShadowPass::RADIUS(), radius);
+}
+
+//------------------------------------------------------------------------------
+double vtkSoftShadowPass::GetRadius(vtkLight* light)
+{
+  if (!light || !light->GetInformation()->Has(vtkSoftShadowPass::RADIUS()))
+  {
+    return 0.0;
+  }
+  return light->GetInformation()->Get(vtkSoftShadowPass::RADIUS());
+}
+
+//------------------------------------------------------------------------------
+void vtkSoftShadowPass::SetDelegatePass(vtkRenderPass* pass)
+{
+  vtkSetObjectBodyMacro(DelegatePass, vtkRenderPass, pass);
+}
+
+//------------------------------------------------------------------------------
+int vtkSoftShadowPass::GetNumberOfShadowedLights() const
+{
+  return static_cast<int>(this->Maps->GetLights().size());
+}
+
+//------------------------------------------------------------------------------
+void vtkSoftShadowPass::SetStage(Stage stage)
+{
+  if (stage != this->CurrentStage)
+  {
+    this->CurrentStage = stage;
+    this->StageTime.Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkSoftShadowPass::GetShaderStageMTime()
+{
+  return this->StageTime;
+}
+
+//------------------------------------------------------------------------------
+void vtkSoftShadowPass::Render(const vtkRenderState* s)
+{
+  vtkOpenGLClearErrorMacro();
+  this->NumberOfRenderedProps = 0;
+  if (!this->DelegatePass)
+  {
+    vtkErrorMacro("No delegate pass: nothing to render.");
+    return;
+  }
+
+  vtkRenderer* renderer = s->GetRenderer();
+  int width = 0, height = 0;
+  renderer->GetTiledSize(&width, &height);
+  if (width <= 0 || height <= 0)
+  {
+    vtkErrorMacro("Renderer has an empty viewport (" << width << "x" << height << ").");
+    return;
+  }
+
+  // 1. Decide: which lights cast shadows, and their frusta.
+  std::vector<vtkLight*> unsupported;
+  this->Maps->Update(renderer, &unsupported);
+  if (!unsupported.empty() && !this->PointLightReported)
+  {
+    vtkErrorMacro(<< unsupported.size()
+                  << " point light(s) (positional, cone angle >= 90): omnidirectional shadows"
+                     " are not implemented yet; these lights are drawn without shadows.");
+    this->PointLightReported = true;
+  }
+
+  // 2-3. Draw the technique's maps and screen-space passes.
+  bool shadowed = !this->Maps->GetLights().empty();
+  if (shadowed)
+  {
+    shadowed = this->RenderShadowMaps(s);
+  }
+  if (shadowed && this->UsesScreenSpace())
+  {
+    shadowed = this->Screen->RenderCameraDepth(s, this) && this->RenderScreenSpace(s);
+  }
+  if (!shadowed)
+  {
+    this->Maps->GetLights().clear();
+  }
+
+  // 4. Draw the scene with the shadow term in every receiver's shader.
+  for (auto& light : this->Maps->GetLights())
+  {
+    light.DepthMap->Activate();
+  }
+  if (shadowed && this->UsesScreenSpace())
+  {
+    this->Screen->ActivateTextures();
+  }
+
+  this->SetStage(Stage::Receivers);
+  this->PreRender(s);
+  this->DelegatePass->Render(s);
+  this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
+  this->PostRender(s);
+  this->SetStage(Stage::Idle);
+
+  if (shadowed && this->UsesScreenSpace())
+  {
+    this->Screen->DeactivateTextures();
+  }
+  for (auto& light : this->Maps->GetLights())
+  {
+    light.DepthMap->Deactivate();
+  }
+  vtkOpenGLCheckErrorMacro("failed after Render");
+}
+
+//------------------------------------------------------------------------------
+bool vtkSoftShadowPass::RenderLightDepthMaps(const vtkRenderState* s, bool linear)
+{
+  auto* context = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
+  for (auto& light : this->Maps->GetLights())
+  {
+    this->Maps->AllocateDepthMap(context, light, this->MapSize, linear);
+    if (!this->Maps->RenderDepth(s, this, light.Map, light.DepthMap))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkSoftShadowPass::GetVisibilityExpression(int slot)
+{
+  std::ostringstream expr;
+  if (this->UsesScreenSpace())
+  {
+    expr << "vtkShadowScreenVisibility(vtkShadowScreen[" << slot << "], vtkShadowMap[" << slot
+         << "], vtkShadowWorldToMap[" << slot << "], vtkShadowPositionWC)";
+  }
+  else
+  {
+    expr << "vtkShadowLookup(vtkShadowMap[" << slot << "], vtkShadowWorldToMap[" << slot
+         << "], vtkShadowPositionWC, vtkShadowPCFRadius)";
+  }
+  return expr.str();
+}
+
+//------------------------------------------------------------------------------
+// Receivers: tags are placed before the mapper writes its lighting code, and
+// filled after, once it is known whether the shader has lighting at all.
+bool vtkSoftShadowPass::PreReplaceShaderValues(
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+{
+  switch (this->CurrentStage)
+  {
+    case Stage::LightDepth:
+      // Depth only: skip all shading. Clipping and depth code come earlier.
+      vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Impl",
+        "gl_FragData[0] = vec4(1.0);\n  return;\n  //VTK::Light::Impl", false);
+      break;
+    case Stage::Receivers:
+      vtkShaderProgram::Substitute(
+        fragmentShader, "//VTK::Light::Dec", "//VTK::SoftShadow::Dec\n//VTK::Light::Dec", false);
+      vtkShaderProgram::Substitute(
+        fragmentShader, "//VTK::Light::Impl", "//VTK::SoftShadow::Impl\n//VTK::Light::Impl", false);
+      break;
+    case Stage::Idle:
+      break;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkSoftShadowPass::PostReplaceShaderValues(
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+{
+  if (this->CurrentStage != Stage::Receivers)
+  {
+    return true;
+  }
+  const auto& lights = this->Maps->GetLights();
+  // Without lighting the mapper declares no view-space position: nothing to
+  // shadow, and such fragments count as lit.
+  const bool lit = fragmentShader.find("vertexVCVSOutput") != std::string::npos;
+  const bool active = lit && !lights.empty();
+
+  std::string onlyVisibility = "1.0";
+  std::ostringstream dec, impl;
+  if (active)
+  {
+    dec << "#define VTK_SHADOW_LIGHTS " << lights.size() << "\n";
+    if (this->UsesScreenSpace())
+    {
+      dec << "#define VTK_SHADOW_SCREEN_SPACE\n";
+    }
+    dec << vtkSoftShadowReceiverFS << "\n" << this->GetVisibilityDeclarations() << "\n";
+
+    impl << "  vec4 vtkShadowPositionWC = vtkShadowViewToWorld * vec4(vertexVCVSOutput.xyz, 1.0);\n";
+    for (size_t slot = 0; slot < lights.size(); ++slot)
+    {
+      const int n = lights[slot].ShaderIndex;
+      const int i = static_cast<int>(slot);
+      impl << "  float vtkShadowVisibility" << n << " = "
+           << this->GetVisibilityExpression(i) << ";\n"
+           << "  float vtkShadowFactor" << n << " = mix(1.0, vtkShadowVisibility" << n
+           << ", vtkShadowAttenuation[" << i << "]);\n";
+
+      // Scale the light's contribution: Phong diffuse and specular, PBR
+      // radiance (directional and positional forms).
+      const std::string color = "lightColor" + std::to_string(n);
+      const std::string factor = "vtkShadowFactor" + std::to_string(n);
+      vtkShaderProgram::Substitute(fragmentShader, "diffuse += (df * " + color + ");",
+        "diffuse += (df * " + factor + " * " + color + ");", false);
+      vtkShaderProgram::Substitute(fragmentShader, "specular += (sf * " + color + ");",
+        "specular += (sf * " + factor + " * " + color + ");", false);
+      vtkShaderProgram::Substitute(fragmentShader, "radiance = " + color + ";",
+        "radiance = " + factor + " * " + color + ";", false);
+      vtkShaderProgram::Substitute(fragmentShader, "radiance = " + color + " * attenuation;",
+        "radiance = " + factor + " * " + color + " * attenuation;", false);
+
+      if (lights[slot].SceneIndex == this->ShadowOnlyLight)
+      {
+        onlyVisibility = "vtkShadowVisibility" + std::to_string(n);
+      }
+    }
+  }
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::SoftShadow::Dec", dec.str(), false);
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::SoftShadow::Impl", impl.str(), false);
+
+  if (this->ShadowOnlyLight >= 0)
+  {
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Impl",
+      "gl_FragData[0] = vec4(vec3(" + onlyVisibility + "), 1.0);\n  //VTK::Light::Impl", false);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkSoftShadowPass::SetShaderParameters(
+  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
+{
+  if (this->CurrentStage != Stage::Receivers || !program->IsUniformUsed("vtkShadowViewToWorld"))
+  {
+    return true;
+  }
+  vtkRenderer* renderer = this->Maps->GetRenderer();
+  vtkCamera* camera = renderer->GetActiveCamera();
+  SetMatrix(program, "vtkShadowViewToWorld",
+    glm::inverse(ToGlm(camera->GetModelViewTransformMatrix())));
+  program->SetUniformf("vtkShadowMapTexel", 1.0f / static_cast<float>(this->MapSize));
+  program->SetUniformi("vtkShadowPCFRadius", this->GetPCFRadius());
+
+  const auto& lights = this->Maps->GetLights();
+  for (size_t slot = 0; slot < lights.size(); ++slot)
+  {
+    const int i = static_cast<int>(slot);
+    SetMatrix(program, Indexed("vtkShadowWorldToMap", i), lights[slot].Map.WorldToMap);
+    program->SetUniformi(
+      Indexed("vtkShadowMap", i).c_str(), lights[slot].DepthMap->GetTextureUnit());
+    program->SetUniformf(
+      Indexed("vtkShadowAttenuation", i).c_str(), static_cast<float>(lights[slot].Attenuation));
+  }
+  if (this->UsesScreenSpace())
+  {
+    this->Screen->SetUniforms(program, static_cast<int>(lights.size()));
+  }
+  this->SetVisibilityUniforms(program);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkSoftShadowPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  this->Superclass::ReleaseGraphicsResources(w);
+  this->Maps->ReleaseGraphicsResources(w);
+  this->Screen->ReleaseGraphicsResources(w);
+  if (this->DelegatePass)
+  {
+    this->DelegatePass->ReleaseGraphicsResources(w);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkSoftShadowPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "MapSize: " << this->MapSize << "\n";
+  os << indent << "SlopeScaledBias: " << this->SlopeScaledBias << "\n";
+  os << indent << "ConstantBias: " << this->ConstantBias << "\n";
+  os << indent << "ShadowOnlyLight: " << this->ShadowOnlyLight << "\n";
+  os << indent << "DelegatePass: ";
+  if (this->DelegatePass)
+  {
+    os << this->DelegatePass->GetClassName() << "\n";
+  }
+  else
+  {
+    os << "(none)\n";
+  }
+}

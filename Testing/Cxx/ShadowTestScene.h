@@ -1,0 +1,84 @@
+// Small scene shared by the C++ tests: a ball above a ground plane, a box
+// beside it, lit by a spot light from above at an angle. Windows stay small:
+// the tests run on a software rasterizer.
+#ifndef ShadowTestScene_h
+#define ShadowTestScene_h
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCubeSource.h"
+#include "vtkLight.h"
+#include "vtkNew.h"
+#include "vtkPlaneSource.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkSoftShadowPass.h"
+#include "vtkSphereSource.h"
+
+namespace ShadowTestScene
+{
+inline vtkSmartPointer<vtkActor> AddActor(vtkRenderer* renderer, vtkAlgorithm* source,
+  const double color[3])
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(source->GetOutputPort());
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(color[0], color[1], color[2]);
+  renderer->AddActor(actor);
+  return actor;
+}
+
+/// Fills `renderer` and returns its spot light.
+inline vtkLight* Build(vtkRenderer* renderer, double lightRadius, double ballHeight = 1.0)
+{
+  const double ground[3] = { 0.85, 0.85, 0.85 };
+  const double red[3] = { 0.9, 0.3, 0.25 };
+  const double blue[3] = { 0.3, 0.45, 0.9 };
+
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-3, 0, -3);
+  plane->SetPoint1(3, 0, -3);
+  plane->SetPoint2(-3, 0, 3);
+  plane->SetResolution(4, 4);
+  AddActor(renderer, plane, ground);
+
+  vtkNew<vtkSphereSource> ball;
+  ball->SetCenter(0, ballHeight, 0);
+  ball->SetRadius(0.5);
+  ball->SetThetaResolution(48);
+  ball->SetPhiResolution(32);
+  AddActor(renderer, ball, red);
+
+  vtkNew<vtkCubeSource> box;
+  box->SetCenter(-1.6, 0.5, -0.8);
+  box->SetXLength(0.6);
+  box->SetYLength(1.0);
+  box->SetZLength(0.6);
+  AddActor(renderer, box, blue);
+
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPositional(true);
+  light->SetPosition(1.5, 5.0, 1.0);
+  light->SetFocalPoint(0, 0, 0);
+  light->SetConeAngle(40);
+  light->SetColor(1, 1, 1);
+  vtkSoftShadowPass::SetRadius(lightRadius, light);
+  renderer->AddLight(light);
+
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(0, 5.5, 7.5);
+  camera->SetFocalPoint(0, 0.3, 0);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetViewAngle(35);
+  renderer->ResetCameraClippingRange();
+  renderer->SetBackground(0.1, 0.1, 0.12);
+  return light;
+}
+}
+
+#endif

@@ -1,0 +1,26 @@
+// Regression image of the `hard` technique on the ball-and-box scene, in a
+// non-square window.
+#include "vtkHardShadowPass.h"
+#include "vtkNew.h"
+#include "vtkRegressionTestImage.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+
+#include "ShadowTestScene.h"
+
+int TestHardShadowPass(int argc, char* argv[])
+{
+  vtkNew<vtkRenderer> renderer;
+  ShadowTestScene::Build(renderer, 0.0);
+  vtkNew<vtkHardShadowPass> pass;
+  pass->SetMapSize(512);
+  renderer->SetPass(pass);
+
+  vtkNew<vtkRenderWindow> window;
+  window->SetSize(320, 240);
+  window->AddRenderer(renderer);
+  window->Render();
+
+  int result = vtkRegressionTestImage(window);
+  return result == vtkRegressionTester::FAILED ? EXIT_FAILURE : EXIT_SUCCESS;
+}

@@ -1,0 +1,27 @@
+// Regression image of the `reference` technique: the same scene as
+// TestHardShadowPass with a light of radius 0.4, so penumbrae appear.
+#include "vtkNew.h"
+#include "vtkReferenceShadowPass.h"
+#include "vtkRegressionTestImage.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+
+#include "ShadowTestScene.h"
+
+int TestReferenceShadowPass(int argc, char* argv[])
+{
+  vtkNew<vtkRenderer> renderer;
+  ShadowTestScene::Build(renderer, 0.4);
+  vtkNew<vtkReferenceShadowPass> pass;
+  pass->SetMapSize(512);
+  pass->SetNumberOfSamples(64);
+  renderer->SetPass(pass);
+
+  vtkNew<vtkRenderWindow> window;
+  window->SetSize(320, 240);
+  window->AddRenderer(renderer);
+  window->Render();
+
+  int result = vtkRegressionTestImage(window);
+  return result == vtkRegressionTester::FAILED ? EXIT_FAILURE : EXIT_SUCCESS;
+}
