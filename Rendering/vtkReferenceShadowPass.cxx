@@ -13,9 +13,10 @@
 #include "vtk_glew.h"
 
 #include "vtkShadowAccumulateFS.h"
+#include "vtkShadowNormalOffsetFS.h"
 
 #include <glm/geometric.hpp>
-#include <glm/gtc/type_ptr.hpp>
+#include <glm/gtc/constants.hpp>
 #include <glm/trigonometric.hpp>
 #include <glm/vec2.hpp>
 
@@ -108,7 +109,8 @@ bool vtkReferenceShadowPass::RenderScreenSpace(const vtkRenderState* s)
   vtkInternals& internals = *this->Internals;
   if (!internals.Accumulate || internals.Accumulate->Program == nullptr)
   {
-    internals.Accumulate = this->Screen->CreateQuad(context, vtkShadowAccumulateFS);
+    internals.Accumulate = this->Screen->CreateQuad(
+      context, std::string(vtkShadowNormalOffsetFS) + "\n" + vtkShadowAccumulateFS);
     if (!internals.Accumulate->Program)
     {
       vtkErrorMacro("Could not build the accumulation shader.");
@@ -156,9 +158,9 @@ bool vtkReferenceShadowPass::RenderScreenSpace(const vtkRenderState* s)
       state->vtkglBlendFunc(GL_ONE, GL_ONE);
       sampleMap->Activate();
       this->Screen->DrawQuad(internals.Accumulate.get(), [&](vtkShaderProgram* program) {
-        const glm::mat4 worldToMap(frustum.WorldToMap);
         program->SetUniformi("sampleMap", sampleMap->GetTextureUnit());
-        program->SetUniformMatrix4x4("sampleWorldToMap", const_cast<float*>(glm::value_ptr(worldToMap)));
+        vtkShadowMapManager::SetFrustumUniforms(program, "sample", "", frustum, this->MapSize);
+        program->SetUniformf("sampleNormalBias", static_cast<float>(this->NormalBias));
         program->SetUniformf("sampleWeight", weight);
       });
       sampleMap->Deactivate();

@@ -13,12 +13,14 @@
 #include "vtkPropCollection.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
 #include "vtkSoftShadowPass.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
 #include <array>
@@ -165,6 +167,7 @@ vtkShadowMapManager::Frustum vtkShadowMapManager::FitFrustum(
     frustum.Far = -lo.z + margin;
     frustum.Projection =
       glm::ortho(lo.x - margin, hi.x + margin, lo.y - margin, hi.y + margin, frustum.Near, frustum.Far);
+    frustum.Footprint = glm::dvec2(std::max(hi.x - lo.x, hi.y - lo.y) + 2.0 * margin, 0.0);
   }
   else
   {
@@ -184,6 +187,7 @@ vtkShadowMapManager::Frustum vtkShadowMapManager::FitFrustum(
     frustum.Near = std::max(nearest * 0.999, frustum.Far * 1e-4);
     const double fovy = glm::radians(std::min(2.0 * light.ConeAngle, 179.0));
     frustum.Projection = glm::perspective(fovy, 1.0, frustum.Near, frustum.Far);
+    frustum.Footprint = glm::dvec2(0.0, 2.0 * std::tan(0.5 * fovy));
   }
   frustum.WorldToMap = ClipToMap * frustum.Projection * frustum.View;
   return frustum;
@@ -346,6 +350,22 @@ bool vtkShadowMapManager::DrawDepth(const vtkRenderState* s, vtkSoftShadowPass* 
   this->DepthFramebuffer->RemoveDepthAttachment();
   state->PopFramebufferBindings();
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowMapManager::SetFrustumUniforms(vtkShaderProgram* program, const std::string& prefix,
+  const std::string& index, const Frustum& frustum, int mapSize)
+{
+  const glm::mat4 worldToMap(frustum.WorldToMap);
+  const glm::vec4 eye(glm::vec3(frustum.Eye), frustum.Parallel ? 0.0f : 1.0f);
+  const glm::vec3 axis(frustum.Direction);
+  const glm::vec2 footprint(frustum.Footprint / static_cast<double>(mapSize));
+  auto name = [&](const char* what) { return prefix + what + index; };
+  program->SetUniformMatrix4x4(
+    name("WorldToMap").c_str(), const_cast<float*>(glm::value_ptr(worldToMap)));
+  program->SetUniform4f(name("Eye").c_str(), glm::value_ptr(eye));
+  program->SetUniform3f(name("Axis").c_str(), glm::value_ptr(axis));
+  program->SetUniform2f(name("Footprint").c_str(), glm::value_ptr(footprint));
 }
 
 //------------------------------------------------------------------------------

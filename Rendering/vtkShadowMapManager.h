@@ -16,6 +16,7 @@
 #include <glm/mat4x4.hpp> // for glm::dmat4
 #include <glm/vec3.hpp>   // for glm::dvec3
 
+#include <string> // for std::string
 #include <vector> // for std::vector
 
 class vtkLight;
@@ -24,6 +25,7 @@ class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
 class vtkRenderState;
 class vtkRenderer;
+class vtkShaderProgram;
 class vtkSoftShadowPass;
 class vtkTextureObject;
 class vtkWindow;
@@ -43,6 +45,8 @@ public:
     glm::dmat4 View{ 1.0 };       ///< world to light eye coordinates
     glm::dmat4 Projection{ 1.0 }; ///< light eye to clip coordinates
     glm::dmat4 WorldToMap{ 1.0 }; ///< world to [0,1]^3 map coordinates
+    /// World size of the whole map: x + y * (distance along Direction).
+    glm::dvec2 Footprint{ 0.0 };
   };
 
   /// One shadowed light.
@@ -102,6 +106,14 @@ public:
    * `target` (sized as the renderer's viewport). No bias.
    */
   bool RenderCameraDepth(const vtkRenderState* s, vtkSoftShadowPass* pass, vtkTextureObject* target);
+
+  /**
+   * Upload what shaders need of a frustum for lookups with normal offset
+   * (vtkShadowNormalOffsetFS.glsl): `<prefix>WorldToMap<index>`, `Eye`,
+   * `Axis` and `Footprint` (per texel of a `mapSize` map).
+   */
+  static void SetFrustumUniforms(vtkShaderProgram* program, const std::string& prefix,
+    const std::string& index, const Frustum& frustum, int mapSize);
 
   void ReleaseGraphicsResources(vtkWindow* w);
 

@@ -16,6 +16,7 @@
 #include "vtkShadowScreenBuffers.h"
 #include "vtkTextureObject.h"
 
+#include "vtkShadowNormalOffsetFS.h"
 #include "vtkSoftShadowReceiverFS.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -212,18 +213,16 @@ bool vtkSoftShadowPass::RenderLightDepthMaps(const vtkRenderState* s, bool linea
 //------------------------------------------------------------------------------
 std::string vtkSoftShadowPass::GetVisibilityExpression(int slot)
 {
-  std::ostringstream expr;
+  const std::string i = std::to_string(slot);
+  const std::string receiver =
+    "vtkShadowReceiver(" + i + ", vtkShadowPositionWC, vtkShadowNormalWC)";
   if (this->UsesScreenSpace())
   {
-    expr << "vtkShadowScreenVisibility(vtkShadowScreen[" << slot << "], vtkShadowMap[" << slot
-         << "], vtkShadowWorldToMap[" << slot << "], vtkShadowPositionWC)";
+    return "vtkShadowScreenVisibility(vtkShadowScreen[" + i + "], vtkShadowMap[" + i +
+      "], vtkShadowWorldToMap[" + i + "], " + receiver + ")";
   }
-  else
-  {
-    expr << "vtkShadowLookup(vtkShadowMap[" << slot << "], vtkShadowWorldToMap[" << slot
-         << "], vtkShadowPositionWC, vtkShadowPCFRadius)";
-  }
-  return expr.str();
+  return "vtkShadowLookup(vtkShadowMap[" + i + "], vtkShadowWorldToMap[" + i + "], " + receiver +
+    ", vtkShadowPCFRadius)";
 }
 
 //------------------------------------------------------------------------------
@@ -274,9 +273,15 @@ bool vtkSoftShadowPass::PostReplaceShaderValues(
     {
       dec << "#define VTK_SHADOW_SCREEN_SPACE\n";
     }
-    dec << vtkSoftShadowReceiverFS << "\n" << this->GetVisibilityDeclarations() << "\n";
+    dec << vtkShadowNormalOffsetFS << "\n"
+        << vtkSoftShadowReceiverFS << "\n"
+        << this->GetVisibilityDeclarations() << "\n";
 
-    impl << "  vec4 vtkShadowPositionWC = vtkShadowViewToWorld * vec4(vertexVCVSOutput.xyz, 1.0);\n";
+    // Geometric normal from derivatives: the face's true orientation, which
+    // the normal offset needs (interpolated normals lie on coarse meshes).
+    impl << "  vec4 vtkShadowPositionWC = vtkShadowViewToWorld * vec4(vertexVCVSOutput.xyz, 1.0);\n"
+            "  vec3 vtkShadowNormalWC = normalize(mat3(vtkShadowViewToWorld) *\n"
+            "    cross(dFdx(vertexVCVSOutput.xyz), dFdy(vertexVCVSOutput.xyz)));\n";
     for (size_t slot = 0; slot < lights.size(); ++slot)
     {
       const int n = lights[slot].ShaderIndex;
@@ -330,12 +335,14 @@ bool vtkSoftShadowPass::SetShaderParameters(
     glm::inverse(ToGlm(camera->GetModelViewTransformMatrix())));
   program->SetUniformf("vtkShadowMapTexel", 1.0f / static_cast<float>(this->MapSize));
   program->SetUniformi("vtkShadowPCFRadius", this->GetPCFRadius());
+  program->SetUniformf("vtkShadowNormalBias", static_cast<float>(this->NormalBias));
 
   const auto& lights = this->Maps->GetLights();
   for (size_t slot = 0; slot < lights.size(); ++slot)
   {
     const int i = static_cast<int>(slot);
-    SetMatrix(program, Indexed("vtkShadowWorldToMap", i), lights[slot].Map.WorldToMap);
+    vtkShadowMapManager::SetFrustumUniforms(
+      program, "vtkShadow", "[" + std::to_string(i) + "]", lights[slot].Map, this->MapSize);
     program->SetUniformi(
       Indexed("vtkShadowMap", i).c_str(), lights[slot].DepthMap->GetTextureUnit());
     program->SetUniformf(
@@ -368,6 +375,7 @@ void vtkSoftShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MapSize: " << this->MapSize << "\n";
   os << indent << "SlopeScaledBias: " << this->SlopeScaledBias << "\n";
   os << indent << "ConstantBias: " << this->ConstantBias << "\n";
+  os << indent << "NormalBias: " << this->NormalBias << "\n";
   os << indent << "ShadowOnlyLight: " << this->ShadowOnlyLight << "\n";
   os << indent << "DelegatePass: ";
   if (this->DelegatePass)

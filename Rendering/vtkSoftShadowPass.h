@@ -86,6 +86,16 @@ public:
 
   ///@{
   /**
+   * Receiver-side normal offset, in shadow-map texels: the point looked up
+   * in a map moves this far along its surface's normal, towards the light.
+   * Default 1.0.
+   */
+  vtkSetClampMacro(NormalBias, double, 0.0, 16.0);
+  vtkGetMacro(NormalBias, double);
+  ///@}
+
+  ///@{
+  /**
    * When >= 0, draw the visibility of this light (index in the renderer's
    * light collection) instead of the shaded colour. Default -1 (off).
    */
@@ -183,6 +193,7 @@ protected:
   int MapSize = 1024;
   double SlopeScaledBias = 2.0;
   double ConstantBias = 4.0;
+  double NormalBias = 1.0;
   int ShadowOnlyLight = -1;
   vtkRenderPass* DelegatePass = nullptr;
 

@@ -2,6 +2,10 @@
 // 1/N, to the light's visibility texture (additive blending).
 uniform sampler2DShadow sampleMap;
 uniform mat4 sampleWorldToMap;
+uniform vec4 sampleEye;
+uniform vec3 sampleAxis;
+uniform vec2 sampleFootprint;
+uniform float sampleNormalBias;
 uniform float sampleWeight;
 
 void main()
@@ -11,7 +15,11 @@ void main()
   {
     discard;
   }
-  vec4 p = sampleWorldToMap * vtkScreenPositionWC(depth);
+  vec3 position = vtkScreenPositionWC(texCoord, depth);
+  vec3 normal = vtkScreenNormalWC(depth, position);
+  vec4 receiver = vtkShadowNormalOffset(
+    vec4(position, 1.0), normal, sampleEye, sampleAxis, sampleFootprint, sampleNormalBias);
+  vec4 p = sampleWorldToMap * receiver;
   p.xyz /= p.w;
   float lit = 1.0;
   if (p.w > 0.0 && all(greaterThanEqual(p.xyz, vec3(0.0))) && all(lessThanEqual(p.xyz, vec3(1.0))))

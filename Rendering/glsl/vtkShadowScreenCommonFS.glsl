@@ -12,16 +12,42 @@ ivec2 vtkScreenPixel()
   return ivec2(gl_FragCoord.xy);
 }
 
+float vtkScreenDepthAt(ivec2 pixel)
+{
+  ivec2 last = textureSize(vtkScreenDepth, 0) - 1;
+  return texelFetch(vtkScreenDepth, clamp(pixel, ivec2(0), last), 0).r;
+}
+
 // Depth 1.0 is background: no surface, nothing to shadow.
 bool vtkScreenHasSurface(out float depth)
 {
-  depth = texelFetch(vtkScreenDepth, vtkScreenPixel(), 0).r;
+  depth = vtkScreenDepthAt(vtkScreenPixel());
   return depth < 1.0;
 }
 
-vec4 vtkScreenPositionWC(float depth)
+// World position of the surface at texture coordinate `uv` (this pixel's:
+// texCoord) and camera depth `depth`.
+vec3 vtkScreenPositionWC(vec2 uv, float depth)
 {
-  vec4 clip = vec4(texCoord * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
-  vec4 world = vtkScreenClipToWorld * clip;
-  return vec4(world.xyz / world.w, 1.0);
+  vec4 world = vtkScreenClipToWorld * vec4(uv * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
+  return world.xyz / world.w;
+}
+
+// Geometric normal from the depth buffer: on each axis, the difference to
+// the neighbour nearer in depth, which most likely lies on the same surface.
+vec3 vtkScreenNormalWC(float depth, vec3 positionWC)
+{
+  ivec2 pixel = vtkScreenPixel();
+  vec2 texel = 1.0 / vec2(textureSize(vtkScreenDepth, 0));
+  float left = vtkScreenDepthAt(pixel - ivec2(1, 0));
+  float right = vtkScreenDepthAt(pixel + ivec2(1, 0));
+  float down = vtkScreenDepthAt(pixel - ivec2(0, 1));
+  float up = vtkScreenDepthAt(pixel + ivec2(0, 1));
+  vec3 dx = abs(right - depth) < abs(left - depth)
+    ? vtkScreenPositionWC(texCoord + vec2(texel.x, 0.0), right) - positionWC
+    : positionWC - vtkScreenPositionWC(texCoord - vec2(texel.x, 0.0), left);
+  vec3 dy = abs(up - depth) < abs(down - depth)
+    ? vtkScreenPositionWC(texCoord + vec2(0.0, texel.y), up) - positionWC
+    : positionWC - vtkScreenPositionWC(texCoord - vec2(0.0, texel.y), down);
+  return normalize(cross(dx, dy));
 }

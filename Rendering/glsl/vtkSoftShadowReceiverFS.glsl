@@ -7,8 +7,19 @@ uniform mat4 vtkShadowViewToWorld;
 uniform mat4 vtkShadowWorldToMap[VTK_SHADOW_LIGHTS];
 uniform float vtkShadowAttenuation[VTK_SHADOW_LIGHTS];
 uniform sampler2DShadow vtkShadowMap[VTK_SHADOW_LIGHTS];
+uniform vec4 vtkShadowEye[VTK_SHADOW_LIGHTS];
+uniform vec3 vtkShadowAxis[VTK_SHADOW_LIGHTS];
+uniform vec2 vtkShadowFootprint[VTK_SHADOW_LIGHTS];
 uniform float vtkShadowMapTexel;
+uniform float vtkShadowNormalBias;
 uniform int vtkShadowPCFRadius;
+
+// The point light `i`'s map is looked up at (see vtkShadowNormalOffset).
+vec4 vtkShadowReceiver(int i, vec4 positionWC, vec3 normalWC)
+{
+  return vtkShadowNormalOffset(positionWC, normalWC, vtkShadowEye[i], vtkShadowAxis[i],
+    vtkShadowFootprint[i], vtkShadowNormalBias);
+}
 
 // Hard shadow: fraction of the (2r+1)^2 depth comparisons that pass around
 // the point's projection in the light's map. Outside the map is lit.
@@ -45,7 +56,7 @@ uniform vec2 vtkShadowViewportOrigin;
 // camera depth pre-pass saw. Other fragments (translucent ones) take the
 // hard shadow of the light's own map.
 float vtkShadowScreenVisibility(
-  sampler2D screen, sampler2DShadow map, mat4 worldToMap, vec4 positionWC)
+  sampler2D screen, sampler2DShadow map, mat4 worldToMap, vec4 receiverWC)
 {
   ivec2 pixel = ivec2(gl_FragCoord.xy - vtkShadowViewportOrigin);
   float depth = texelFetch(vtkShadowCameraDepth, pixel, 0).r;
@@ -53,6 +64,6 @@ float vtkShadowScreenVisibility(
   {
     return texelFetch(screen, pixel, 0).r;
   }
-  return vtkShadowLookup(map, worldToMap, positionWC, 0);
+  return vtkShadowLookup(map, worldToMap, receiverWC, 0);
 }
 #endif

@@ -1,0 +1,19 @@
+// Receiver-side normal offset, shared by mapper shaders and screen-space
+// passes: the looked-up point moves along the surface's geometric normal,
+// turned towards the light, by `texels` shadow-map texels. Unlike a depth
+// bias it does not depend on how depth is stored, so surfaces facing the
+// light head-on (zero depth slope) and positions rebuilt from a depth buffer
+// stay free of acne.
+//
+// eye: the map's eye, w = 1 for a perspective (spot) map, 0 for a parallel
+// one; axis: unit view direction of the map; footprint: world size of one
+// texel, x + y * (distance along the axis).
+vec4 vtkShadowNormalOffset(
+  vec4 positionWC, vec3 normalWC, vec4 eye, vec3 axis, vec2 footprint, float texels)
+{
+  vec3 toLight = eye.w > 0.0 ? normalize(eye.xyz - positionWC.xyz) : -axis;
+  vec3 n = dot(normalWC, toLight) < 0.0 ? -normalWC : normalWC;
+  float distance = eye.w > 0.0 ? dot(positionWC.xyz - eye.xyz, axis) : 0.0;
+  float texel = footprint.x + footprint.y * distance;
+  return vec4(positionWC.xyz + n * (texel * texels), 1.0);
+}

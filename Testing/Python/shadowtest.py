@@ -1,0 +1,176 @@
+"""Helpers for the numeric shadow tests: scenes whose shadows geometry can
+predict, the `softshadows` program, and camera rays matching vtkCamera's.
+
+Images are handled bottom row first, as vtkImageData stores them.
+"""
+
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOImage import vtkPNGReader
+
+SOFTSHADOWS = os.environ.get("SOFTSHADOWS_EXE", "softshadows")
+
+# The ball scene: ground 6 x 6 on y = 0, a ball of radius 0.5 at (0, h, 0),
+# a spot light above at LIGHT, camera looking down at 45 degrees.
+GROUND_HALF = 3.0
+BALL_RADIUS = 0.5
+LIGHT = np.array([0.0, 5.0, 0.0])
+CAMERA = {"position": [0.0, 6.0, 6.0], "focal_point": [0.0, 0.0, 0.0],
+          "view_up": [0.0, 1.0, 0.0], "view_angle": 40.0}
+
+
+def ball_scene(height=1.0, light_radius=0.0, technique="hard", params=None,
+               size=(240, 180), map_size=1024):
+    shadows = {"technique": technique, "map_size": map_size}
+    if params:
+        shadows[technique.split(":")[0]] = params
+    return {
+        "name": "ball",
+        "size": list(size),
+        "camera": CAMERA,
+        "lights": [{"type": "spot", "position": LIGHT.tolist(),
+                    "focal_point": [0, 0, 0], "cone_angle": 45,
+                    "radius": light_radius}],
+        "actors": [
+            {"source": "plane",
+             "params": {"size": [2 * GROUND_HALF, 2 * GROUND_HALF], "resolution": 8}},
+            {"source": "sphere", "params": {"radius": BALL_RADIUS, "resolution": 64},
+             "position": [0.0, height, 0.0], "color": [0.9, 0.3, 0.25]},
+        ],
+        "shadows": shadows,
+    }
+
+
+def run(args, check=True):
+    """Runs softshadows; returns the CompletedProcess."""
+    result = subprocess.run([SOFTSHADOWS] + list(args), capture_output=True, text=True)
+    if check and result.returncode != 0:
+        raise AssertionError("softshadows %s failed (%d):\n%s%s" % (
+            " ".join(args), result.returncode, result.stdout, result.stderr))
+    return result
+
+
+def read_png(path):
+    """Returns an array [rows, columns, components], bottom row first."""
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    w, h, _ = image.GetDimensions()
+    scalars = image.GetPointData().GetScalars()
+    return vtk_to_numpy(scalars).reshape(h, w, scalars.GetNumberOfComponents())
+
+
+def shadow_only(scene, technique=None, light=0):
+    """Renders `scene` with --shadow-only; returns (visibility in [0,1],
+    geometry mask), both [rows, columns]."""
+    with tempfile.TemporaryDirectory() as folder:
+        scene_file = os.path.join(folder, "scene.json")
+        with open(scene_file, "w") as f:
+            json.dump(scene, f)
+        output = os.path.join(folder, "out.png")
+        args = ["render", scene_file, "--shadow-only", "--output", output,
+                "--light", str(light)]
+        if technique:
+            args += ["--technique", technique]
+        run(args)
+        pixels = read_png(output)
+    assert pixels.shape[2] == 2, "shadow-only output must be grey+alpha"
+    return pixels[:, :, 0] / 255.0, pixels[:, :, 1] == 255
+
+
+def camera_rays(camera, size):
+    """Unit ray directions through every pixel centre, [rows, columns, 3],
+    for a perspective vtkCamera with a vertical view angle."""
+    w, h = size
+    eye = np.array(camera["position"], float)
+    forward = np.array(camera["focal_point"], float) - eye
+    forward /= np.linalg.norm(forward)
+    right = np.cross(forward, np.array(camera["view_up"], float))
+    right /= np.linalg.norm(right)
+    up = np.cross(right, forward)
+    half = math.tan(math.radians(camera["view_angle"]) / 2.0)
+    x = ((np.arange(w) + 0.5) / w * 2.0 - 1.0) * half * w / h
+    y = ((np.arange(h) + 0.5) / h * 2.0 - 1.0) * half
+    rays = forward + x[None, :, None] * right + y[:, None, None] * up
+    return rays / np.linalg.norm(rays, axis=2, keepdims=True)
+
+
+def sphere_hit(origin, rays, center, radius):
+    """Ray parameter of the first hit with a sphere, inf where missed."""
+    oc = origin - center
+    b = rays @ oc
+    c = oc @ oc - radius * radius
+    disc = b * b - c
+    t = -b - np.sqrt(np.maximum(disc, 0.0))
+    return np.where((disc > 0) & (t > 0), t, np.inf)
+
+
+def ground_points(scene):
+    """For the ball scene: world points of the visible ground, a mask of the
+    pixels showing ground, and the world size of a pixel there."""
+    size = scene["size"]
+    camera = scene["camera"]
+    eye = np.array(camera["position"], float)
+    rays = camera_rays(camera, size)
+    ball = np.array(scene["actors"][1]["position"], float)
+    t_ground = np.where(rays[:, :, 1] < 0, -eye[1] / np.minimum(rays[:, :, 1], -1e-12), np.inf)
+    points = eye + t_ground[:, :, None] * rays
+    inside = (np.abs(points[:, :, 0]) <= GROUND_HALF) & (np.abs(points[:, :, 2]) <= GROUND_HALF)
+    t_ball = sphere_hit(eye, rays, ball, BALL_RADIUS)
+    visible = inside & (t_ground < t_ball)
+    pixel = t_ground * 2.0 * math.tan(math.radians(camera["view_angle"]) / 2.0) / size[1]
+    return points, visible, pixel
+
+
+def segment_clearance(points, target, center, radius):
+    """Distance by which the segments points->target miss the sphere
+    (negative: they pass through it)."""
+    d = target - points
+    length2 = np.sum(d * d, axis=-1)
+    s = np.clip(np.sum((center - points) * d, axis=-1) / length2, 0.0, 1.0)
+    closest = points + s[..., None] * d
+    return np.linalg.norm(closest - center, axis=-1) - radius
+
+
+def expected_hard_shadow(scene):
+    """Ground pixels, whether each is in the ball's hard shadow, and how many
+    pixels each lies from the shadow's edge."""
+    points, visible, pixel = ground_points(scene)
+    ball = np.array(scene["actors"][1]["position"], float)
+    clearance = segment_clearance(points, LIGHT, ball, BALL_RADIUS)
+    # A clearance at the ball maps onto the ground scaled by the distances.
+    scale = np.linalg.norm(points - LIGHT, axis=-1) / np.linalg.norm(ball - LIGHT)
+    edge_pixels = np.abs(clearance) * scale / pixel
+    return visible, clearance < 0, edge_pixels
+
+
+def penumbra_width(scene, visibility, low=0.02, high=0.98):
+    """World width of the penumbra on the ground line z = 0, x > 0: the
+    x-extent of the samples whose visibility lies strictly between `low`
+    and `high`. One sample a column: the visible ground pixel nearest z = 0."""
+    points, visible, pixel = ground_points(scene)
+    z = np.where(visible & (points[:, :, 0] > 0), np.abs(points[:, :, 2]), np.inf)
+    rows = np.argmin(z, axis=0)
+    columns = np.arange(z.shape[1])
+    near = z[rows, columns] < pixel[rows, columns]
+    x = points[rows, columns, 0][near]
+    v = visibility[rows, columns][near]
+    band = (v > low) & (v < high)
+    if not band.any():
+        return 0.0
+    return float(x[band].max() - x[band].min())
+
+
+def check(condition, message):
+    if not condition:
+        print("FAIL: " + message)
+        sys.exit(1)
+    print("ok: " + message)

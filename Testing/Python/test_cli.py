@@ -1,0 +1,78 @@
+"""The `softshadows` program: listing, rendering, sizes, and one clear
+message naming the field for every malformed scene."""
+import json
+import os
+import tempfile
+
+import shadowtest as st
+
+here = os.path.dirname(os.path.abspath(__file__))
+bad = os.path.join(here, "..", "Scenes", "bad")
+
+listing = st.run(["techniques"]).stdout
+for name in ("hard", "reference", "vtk", "pcf_radius", "samples"):
+    st.check(name in listing, "`techniques` lists %s" % name)
+
+# Each bad scene: exit code 2, one line on stderr naming what is wrong.
+expectations = {
+    "syntax.json": "syntax.json",
+    "unknown_field.json": "lights[0].colour",
+    "wrong_type.json": "lights[0].cone_angle",
+    "missing_file.json": "actors[0].file",
+    "unknown_technique.json": "raytraced",
+    "unknown_source.json": "teapot",
+    "light_without_position.json": "lights[0]",
+}
+for name, needle in sorted(expectations.items()):
+    result = st.run(["render", os.path.join(bad, name)], check=False)
+    message = result.stderr.strip()
+    st.check(result.returncode == 2, "%s: exit code 2 (got %d)" % (name, result.returncode))
+    st.check(needle in message and "\n" not in message,
+             "%s: one line naming %s: %r" % (name, needle, message))
+
+good = st.ball_scene(size=(160, 120), map_size=256)
+with tempfile.TemporaryDirectory() as folder:
+    scene_file = os.path.join(folder, "ball.json")
+    with open(scene_file, "w") as f:
+        json.dump(good, f)
+
+    for args, needle in [(["--technique", "nonsense"], "nonsense"),
+                         (["--size", "12xfoo"], "--size"),
+                         (["--size", "0x10"], "--size"),
+                         (["--technique", "hard:fancy"], "fancy"),
+                         (["--light", "3", "--shadow-only"], "--light")]:
+        result = st.run(["render", scene_file] + args, check=False)
+        st.check(result.returncode == 2 and needle in result.stderr,
+                 "render %s: rejected naming %s" % (" ".join(args), needle))
+
+    # Default output name, size override, colour image.
+    cwd = os.getcwd()
+    os.chdir(folder)
+    try:
+        st.run(["render", scene_file, "--size", "90x70"])
+        pixels = st.read_png(os.path.join(folder, "ball-hard.png"))
+    finally:
+        os.chdir(cwd)
+    st.check(pixels.shape[:2] == (70, 90), "--size overrides the scene size")
+    st.check(pixels.shape[2] in (3, 4), "colour image written")
+
+    # Shadow-only: grey + alpha, background transparent.
+    visibility, geometry = st.shadow_only(good)
+    st.check(geometry.any() and not geometry.all(), "shadow-only alpha separates geometry from background")
+
+    # VTK's own pass renders too (the benchmark's baseline).
+    st.run(["render", scene_file, "--technique", "vtk", "--output", os.path.join(folder, "vtk.png")])
+    st.check(os.path.exists(os.path.join(folder, "vtk.png")), "technique vtk renders")
+
+    # Bench: one JSON object per technique and line, hard included.
+    out = st.run(["bench", scene_file, "--techniques", "reference", "--frames", "2",
+                  "--size", "64x48", "--json"]).stdout
+    rows = [json.loads(line) for line in out.splitlines()]
+    names = sorted(row["technique"] for row in rows)
+    st.check(names == ["hard", "reference"], "bench adds hard: %s" % names)
+    for row in rows:
+        st.check(set(row) == {"technique", "frames", "mean_ms", "median_ms", "ratio_to_hard",
+                              "map_size", "size"}, "bench JSON keys for %s" % row["technique"])
+    hard_row = [r for r in rows if r["technique"] == "hard"][0]
+    st.check(abs(hard_row["ratio_to_hard"] - 1.0) < 1e-9 and hard_row["size"] == [64, 48],
+             "bench: hard's ratio is 1 and the size is the override")

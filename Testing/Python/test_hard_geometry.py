@@ -1,0 +1,26 @@
+"""`hard` puts the ball's shadow exactly where geometry says, on a
+non-square window: every ground pixel more than two pixels from the
+predicted shadow edge is lit (1) or in umbra (0) as predicted."""
+import numpy as np
+
+import shadowtest as st
+
+for params, label in [({"pcf_radius": 0, "hardware_filtering": False}, "binary"),
+                      ({}, "default PCF")]:
+    scene = st.ball_scene(height=1.0, params=params, size=(240, 180))
+    visibility, geometry = st.shadow_only(scene)
+    ground, shadowed, edge = st.expected_hard_shadow(scene)
+
+    st.check(visibility.shape == (180, 240), "%s: output has the render size" % label)
+    st.check(geometry[ground].all(), "%s: alpha marks every ground pixel" % label)
+    st.check(not geometry[0, :].any(), "%s: bottom row (off the ground) is background" % label)
+
+    far = ground & (edge > 2.0)
+    umbra = far & shadowed
+    lit = far & ~shadowed
+    st.check(umbra.sum() > 300 and lit.sum() > 10000,
+             "%s: enough pixels to judge (%d umbra, %d lit)" % (label, umbra.sum(), lit.sum()))
+    st.check(np.all(visibility[umbra] < 0.02),
+             "%s: predicted umbra is dark (max %.3f)" % (label, visibility[umbra].max()))
+    st.check(np.all(visibility[lit] > 0.98),
+             "%s: predicted lit ground is fully lit (min %.3f)" % (label, visibility[lit].min()))

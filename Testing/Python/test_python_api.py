@@ -1,0 +1,82 @@
+"""A Python user's path: import the passes from `vtksoftshadows`, set one on
+a renderer, and see a shadow where the ball hides the light."""
+import sys
+
+from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
+from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkPolyDataMapper,
+                                         vtkRenderWindow, vtkRenderer)
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (OpenGL factory)
+
+from vtksoftshadows import (vtkFenceSource, vtkHardShadowPass, vtkReferenceShadowPass,
+                            vtkSoftShadowPass)
+
+import shadowtest as st
+
+
+def actor(source):
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputConnection(source.GetOutputPort())
+    a = vtkActor()
+    a.SetMapper(mapper)
+    return a
+
+
+renderer = vtkRenderer()
+plane = vtkPlaneSource()
+plane.SetOrigin(-3, 0, -3)
+plane.SetPoint1(3, 0, -3)
+plane.SetPoint2(-3, 0, 3)
+renderer.AddActor(actor(plane))
+ball = vtkSphereSource()
+ball.SetCenter(0, 1, 0)
+ball.SetRadius(0.5)
+renderer.AddActor(actor(ball))
+
+light = vtkLight()
+light.SetLightTypeToSceneLight()
+light.SetPositional(True)
+light.SetPosition(0, 5, 0)
+light.SetFocalPoint(0, 0, 0)
+light.SetConeAngle(45)
+vtkSoftShadowPass.SetRadius(0.3, light)
+st.check(abs(vtkSoftShadowPass.GetRadius(light) - 0.3) < 1e-12, "radius stored on the light")
+renderer.AddLight(light)
+
+camera = renderer.GetActiveCamera()
+camera.SetPosition(0, 6, 6)
+camera.SetFocalPoint(0, 0, 0)
+renderer.ResetCameraClippingRange()
+
+window = vtkRenderWindow()
+window.SetOffScreenRendering(True)
+window.SetSize(200, 150)
+window.AddRenderer(renderer)
+
+
+def visibility_at(x, y, z):
+    renderer.SetWorldPoint(x, y, z, 1.0)
+    renderer.WorldToDisplay()
+    dx, dy, _ = renderer.GetDisplayPoint()
+    px, py = int(round(dx)), int(round(dy))
+    rgb = vtkUnsignedCharArray()
+    window.GetPixelData(px, py, px, py, 0, rgb, 0)
+    return rgb.GetValue(0) / 255.0
+
+
+for pass_type in (vtkHardShadowPass, vtkReferenceShadowPass):
+    shadow_pass = pass_type()
+    shadow_pass.SetMapSize(512)
+    shadow_pass.SetShadowOnlyLight(0)
+    if pass_type is vtkReferenceShadowPass:
+        shadow_pass.SetNumberOfSamples(16)
+    renderer.SetPass(shadow_pass)
+    window.Render()
+    name = pass_type.__name__
+    st.check(shadow_pass.GetNumberOfShadowedLights() == 1, name + ": one shadowed light")
+    st.check(visibility_at(0.0, 0.0, 0.0) < 0.05, name + ": ground under the ball is in umbra")
+    st.check(visibility_at(2.0, 0.0, 1.0) > 0.95, name + ": open ground is lit")
+
+fence = vtkFenceSource()
+fence.Update()
+st.check(fence.GetOutput().GetNumberOfPolys() > 0, "vtkFenceSource makes triangles")
