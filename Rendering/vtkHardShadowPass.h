@@ -24,8 +24,9 @@ public:
 
   ///@{
   /**
-   * Radius in texels of the square PCF kernel: (2r+1)^2 taps, each one
-   * hardware-filtered (2x2 bilinear comparison) when HardwareFiltering is on.
+   * Radius in texels of the square PCF kernel, whose footprint is (2r+1)^2
+   * texels: (2r)^2 taps on texel corners when HardwareFiltering is on (each
+   * a 2x2 bilinear comparison: tent weights), (2r+1)^2 binary taps when off.
    * 0 is a single tap. Default 1.
    */
   vtkSetClampMacro(PCFRadius, int, 0, 8);

@@ -199,6 +199,7 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
 bool vtkSoftShadowPass::RenderLightDepthMaps(const vtkRenderState* s, bool linear)
 {
   auto* context = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
+  this->LinearMaps = linear;
   for (auto& light : this->Maps->GetLights())
   {
     this->Maps->AllocateDepthMap(context, light, this->MapSize, linear);
@@ -335,6 +336,7 @@ bool vtkSoftShadowPass::SetShaderParameters(
     glm::inverse(ToGlm(camera->GetModelViewTransformMatrix())));
   program->SetUniformf("vtkShadowMapTexel", 1.0f / static_cast<float>(this->MapSize));
   program->SetUniformi("vtkShadowPCFRadius", this->GetPCFRadius());
+  program->SetUniformi("vtkShadowPCFBilinear", this->GetPCFBilinear() ? 1 : 0);
   program->SetUniformf("vtkShadowNormalBias", static_cast<float>(this->NormalBias));
 
   const auto& lights = this->Maps->GetLights();

@@ -179,6 +179,12 @@ protected:
   virtual int GetPCFRadius() const { return 0; }
 
   /**
+   * Whether the light depth maps are filtered bilinearly (set by the
+   * technique through RenderLightDepthMaps()); PCF then samples texel corners.
+   */
+  bool GetPCFBilinear() const { return this->LinearMaps; }
+
+  /**
    * Shader stage changes force mappers to rebuild their shader source.
    */
   enum class Stage
@@ -208,6 +214,7 @@ private:
   friend class vtkShadowScreenBuffers;
 
   Stage CurrentStage = Stage::Idle;
+  bool LinearMaps = false;
   vtkTimeStamp StageTime;
   bool PointLightReported = false;
 };

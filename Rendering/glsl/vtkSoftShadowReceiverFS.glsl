@@ -21,8 +21,13 @@ vec4 vtkShadowReceiver(int i, vec4 positionWC, vec3 normalWC)
     vtkShadowFootprint[i], vtkShadowNormalBias);
 }
 
-// Hard shadow: fraction of the (2r+1)^2 depth comparisons that pass around
-// the point's projection in the light's map. Outside the map is lit.
+// Hard shadow: the fraction of depth comparisons that pass around the
+// point's projection in the light's map, over a (2r+1)^2-texel footprint.
+// With bilinear comparison (vtkShadowPCFBilinear) the taps sit on texel
+// corners, (2r)^2 of them, each averaging 2x2 texels: the same footprint
+// with tent weights for fewer taps. Outside the map is lit.
+uniform bool vtkShadowPCFBilinear;
+
 float vtkShadowLookup(sampler2DShadow map, mat4 worldToMap, vec4 positionWC, int radius)
 {
   vec4 p = worldToMap * positionWC;
@@ -35,16 +40,22 @@ float vtkShadowLookup(sampler2DShadow map, mat4 worldToMap, vec4 positionWC, int
   {
     return 1.0;
   }
-  float lit = 0.0;
-  for (int y = -radius; y <= radius; ++y)
+  if (radius == 0)
   {
-    for (int x = -radius; x <= radius; ++x)
+    return texture(map, p.xyz);
+  }
+  int taps = vtkShadowPCFBilinear ? 2 * radius : 2 * radius + 1;
+  float first = vtkShadowPCFBilinear ? 0.5 - float(radius) : -float(radius);
+  float lit = 0.0;
+  for (int y = 0; y < taps; ++y)
+  {
+    for (int x = 0; x < taps; ++x)
     {
-      lit += texture(map, vec3(p.xy + vec2(x, y) * vtkShadowMapTexel, p.z));
+      vec2 offset = (vec2(x, y) + first) * vtkShadowMapTexel;
+      lit += texture(map, vec3(p.xy + offset, p.z));
     }
   }
-  float taps = float((2 * radius + 1) * (2 * radius + 1));
-  return lit / taps;
+  return lit / float(taps * taps);
 }
 
 #ifdef VTK_SHADOW_SCREEN_SPACE
