@@ -157,12 +157,14 @@ bool vtkReferenceShadowPass::RenderScreenSpace(const vtkRenderState* s)
       state->vtkglEnable(GL_BLEND);
       state->vtkglBlendFunc(GL_ONE, GL_ONE);
       sampleMap->Activate();
-      this->Screen->DrawQuad(internals.Accumulate.get(), [&](vtkShaderProgram* program) {
-        program->SetUniformi("sampleMap", sampleMap->GetTextureUnit());
-        vtkShadowMapManager::SetFrustumUniforms(program, "sample", "", frustum, this->MapSize);
-        program->SetUniformf("sampleNormalBias", static_cast<float>(this->NormalBias));
-        program->SetUniformf("sampleWeight", weight);
-      });
+      this->Screen->DrawQuad(internals.Accumulate.get(),
+        [&](vtkShaderProgram* program)
+        {
+          program->SetUniformi("sampleMap", sampleMap->GetTextureUnit());
+          vtkShadowMapManager::SetFrustumUniforms(program, "sample", "", frustum, this->MapSize);
+          program->SetUniformf("sampleNormalBias", static_cast<float>(this->NormalBias));
+          program->SetUniformf("sampleWeight", weight);
+        });
       sampleMap->Deactivate();
     }
     this->Screen->EndVisibility();

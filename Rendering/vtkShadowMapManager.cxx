@@ -51,8 +51,8 @@ glm::dvec3 PerpendicularUp(const glm::dvec3& dir)
 }
 
 // OpenGL clip space [-1,1]^3 to texture/depth space [0,1]^3.
-const glm::dmat4 ClipToMap = glm::translate(glm::dmat4(1.0), glm::dvec3(0.5)) *
-  glm::scale(glm::dmat4(1.0), glm::dvec3(0.5));
+const glm::dmat4 ClipToMap =
+  glm::translate(glm::dmat4(1.0), glm::dvec3(0.5)) * glm::scale(glm::dmat4(1.0), glm::dvec3(0.5));
 }
 
 //------------------------------------------------------------------------------
@@ -165,8 +165,8 @@ vtkShadowMapManager::Frustum vtkShadowMapManager::FitFrustum(
     const double margin = 1e-3 * sceneRadius;
     frustum.Near = -hi.z - margin;
     frustum.Far = -lo.z + margin;
-    frustum.Projection =
-      glm::ortho(lo.x - margin, hi.x + margin, lo.y - margin, hi.y + margin, frustum.Near, frustum.Far);
+    frustum.Projection = glm::ortho(
+      lo.x - margin, hi.x + margin, lo.y - margin, hi.y + margin, frustum.Near, frustum.Far);
     frustum.Footprint = glm::dvec2(std::max(hi.x - lo.x, hi.y - lo.y) + 2.0 * margin, 0.0);
   }
   else
@@ -217,8 +217,8 @@ void vtkShadowMapManager::AllocateDepthMap(
 }
 
 //------------------------------------------------------------------------------
-bool vtkShadowMapManager::RenderDepth(
-  const vtkRenderState* s, vtkSoftShadowPass* pass, const Frustum& frustum, vtkTextureObject* target)
+bool vtkShadowMapManager::RenderDepth(const vtkRenderState* s, vtkSoftShadowPass* pass,
+  const Frustum& frustum, vtkTextureObject* target)
 {
   if (!this->LightCamera)
   {

@@ -61,7 +61,7 @@ public:
     double Attenuation = 1.0;   ///< vtkLight::GetShadowAttenuation()
     glm::dvec3 Position{ 0.0 }; ///< world; for directional lights a point on the axis
     glm::dvec3 Direction{ 0.0, 0.0, -1.0 };
-    Frustum Map;                ///< the light's own (centre) frustum
+    Frustum Map; ///< the light's own (centre) frustum
     vtkSmartPointer<vtkTextureObject> DepthMap;
   };
 
@@ -105,7 +105,8 @@ public:
    * Draw the depth of the props of `s` through the renderer's own camera into
    * `target` (sized as the renderer's viewport). No bias.
    */
-  bool RenderCameraDepth(const vtkRenderState* s, vtkSoftShadowPass* pass, vtkTextureObject* target);
+  bool RenderCameraDepth(
+    const vtkRenderState* s, vtkSoftShadowPass* pass, vtkTextureObject* target);
 
   /**
    * Upload what shaders need of a frustum for lookups with normal offset

@@ -18,8 +18,8 @@
 
 #include <functional> // for std::function
 #include <memory>     // for std::unique_ptr
-#include <string> // for std::string
-#include <vector> // for std::vector
+#include <string>     // for std::string
+#include <vector>     // for std::vector
 
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
@@ -57,7 +57,8 @@ public:
    * uploads the reconstruction matrix, then lets `setUniforms` add the pass's
    * own. Depth test is off while it draws.
    */
-  void DrawQuad(vtkOpenGLQuadHelper* quad, const std::function<void(vtkShaderProgram*)>& setUniforms);
+  void DrawQuad(
+    vtkOpenGLQuadHelper* quad, const std::function<void(vtkShaderProgram*)>& setUniforms);
 
   /**
    * Draw into light `slot`'s visibility texture (allocated on demand,

@@ -287,8 +287,8 @@ bool vtkSoftShadowPass::PostReplaceShaderValues(
     {
       const int n = lights[slot].ShaderIndex;
       const int i = static_cast<int>(slot);
-      impl << "  float vtkShadowVisibility" << n << " = "
-           << this->GetVisibilityExpression(i) << ";\n"
+      impl << "  float vtkShadowVisibility" << n << " = " << this->GetVisibilityExpression(i)
+           << ";\n"
            << "  float vtkShadowFactor" << n << " = mix(1.0, vtkShadowVisibility" << n
            << ", vtkShadowAttenuation[" << i << "]);\n";
 
@@ -332,8 +332,8 @@ bool vtkSoftShadowPass::SetShaderParameters(
   }
   vtkRenderer* renderer = this->Maps->GetRenderer();
   vtkCamera* camera = renderer->GetActiveCamera();
-  SetMatrix(program, "vtkShadowViewToWorld",
-    glm::inverse(ToGlm(camera->GetModelViewTransformMatrix())));
+  SetMatrix(
+    program, "vtkShadowViewToWorld", glm::inverse(ToGlm(camera->GetModelViewTransformMatrix())));
   program->SetUniformf("vtkShadowMapTexel", 1.0f / static_cast<float>(this->MapSize));
   program->SetUniformi("vtkShadowPCFRadius", this->GetPCFRadius());
   program->SetUniformi("vtkShadowPCFBilinear", this->GetPCFBilinear() ? 1 : 0);

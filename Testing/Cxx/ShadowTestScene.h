@@ -20,8 +20,8 @@
 
 namespace ShadowTestScene
 {
-inline vtkSmartPointer<vtkActor> AddActor(vtkRenderer* renderer, vtkAlgorithm* source,
-  const double color[3])
+inline vtkSmartPointer<vtkActor> AddActor(
+  vtkRenderer* renderer, vtkAlgorithm* source, const double color[3])
 {
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputConnection(source->GetOutputPort());

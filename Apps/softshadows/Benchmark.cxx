@@ -1,0 +1,180 @@
+#include "Benchmark.h"
+
+#include <vtkLight.h>
+#include <vtkLightCollection.h>
+#include <vtkMath.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtk_glew.h>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <numeric>
+#include <ostream>
+
+namespace softshadows
+{
+namespace
+{
+/**
+ * Moves a light around a small horizontal circle centred on its position.
+ * The radius is 2% of the light's distance to its focal point, so the light
+ * direction changes by about a degree, enough to invalidate every shadow map
+ * but not to change the picture's character.
+ */
+class LightOrbit
+{
+public:
+  explicit LightOrbit(vtkLight* light)
+    : Light(light)
+  {
+    if (this->Light)
+    {
+      this->Light->GetPosition(this->Start);
+      double focalPoint[3];
+      this->Light->GetFocalPoint(focalPoint);
+      this->Radius = 0.02 * std::sqrt(vtkMath::Distance2BetweenPoints(this->Start, focalPoint));
+    }
+  }
+
+  ~LightOrbit()
+  {
+    if (this->Light)
+    {
+      this->Light->SetPosition(this->Start);
+    }
+  }
+
+  void Step()
+  {
+    if (!this->Light)
+    {
+      return;
+    }
+    // 12 positions per turn: every frame a new one.
+    this->Angle += 2.0 * vtkMath::Pi() / 12.0;
+    this->Light->SetPosition(this->Start[0] + this->Radius * std::cos(this->Angle), this->Start[1],
+      this->Start[2] + this->Radius * std::sin(this->Angle));
+  }
+
+  LightOrbit(const LightOrbit&) = delete;
+  LightOrbit& operator=(const LightOrbit&) = delete;
+
+private:
+  vtkLight* Light;
+  double Start[3] = { 0.0, 0.0, 0.0 };
+  double Radius = 0.0;
+  double Angle = 0.0;
+};
+
+vtkLight* FirstLight(vtkRenderer* renderer)
+{
+  vtkLightCollection* lights = renderer->GetLights();
+  lights->InitTraversal();
+  return lights->GetNextItem();
+}
+
+double Median(std::vector<double> values)
+{
+  std::sort(values.begin(), values.end());
+  const std::size_t middle = values.size() / 2;
+  return values.size() % 2 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
+}
+
+// Thousandths, so that the JSON prints 12.3 rather than 12.300000000000001.
+double Round3(double value)
+{
+  return std::round(value * 1000.0) / 1000.0;
+}
+}
+
+//------------------------------------------------------------------------------
+std::vector<Timing> RunBenchmark(vtkRenderWindow* window, vtkRenderer* renderer,
+  std::vector<TechniqueInstance>& techniques, int frames, int warmUp, int mapSize)
+{
+  using Clock = std::chrono::steady_clock;
+  std::vector<std::vector<double>> times(techniques.size());
+  LightOrbit orbit(FirstLight(renderer));
+  for (int round = 0; round < warmUp + frames; ++round)
+  {
+    for (std::size_t t = 0; t < techniques.size(); ++t)
+    {
+      orbit.Step();
+      renderer->SetPass(techniques[t].Pass);
+      const auto start = Clock::now();
+      window->Render();
+      window->MakeCurrent();
+      glFinish();
+      const std::chrono::duration<double, std::milli> elapsed = Clock::now() - start;
+      if (round >= warmUp)
+      {
+        times[t].push_back(elapsed.count());
+      }
+    }
+  }
+
+  std::vector<Timing> timings;
+  double hardMean = 0.0;
+  for (std::size_t t = 0; t < techniques.size(); ++t)
+  {
+    Timing timing;
+    timing.Technique = techniques[t].Spec;
+    timing.Frames = frames;
+    timing.MeanMs = std::accumulate(times[t].begin(), times[t].end(), 0.0) / frames;
+    timing.MedianMs = Median(times[t]);
+    timing.MapSize = mapSize;
+    timing.Size = { window->GetSize()[0], window->GetSize()[1] };
+    hardMean = timing.Technique == "hard" ? timing.MeanMs : hardMean;
+    timings.push_back(timing);
+  }
+  for (Timing& timing : timings)
+  {
+    timing.RatioToHard = hardMean > 0.0 ? timing.MeanMs / hardMean : 0.0;
+  }
+  return timings;
+}
+
+//------------------------------------------------------------------------------
+void PrintTimingTable(std::ostream& os, const std::vector<Timing>& timings)
+{
+  if (timings.empty())
+  {
+    return;
+  }
+  const Timing& first = timings.front();
+  os << "Frame times, " << first.Size[0] << "x" << first.Size[1] << " pixels, shadow maps "
+     << first.MapSize << "^2, " << first.Frames << " frames each (light moving):\n";
+  os << std::left << std::setw(22) << "technique" << std::right << std::setw(11) << "mean ms"
+     << std::setw(11) << "median ms" << std::setw(10) << "x hard"
+     << "\n";
+  for (const Timing& timing : timings)
+  {
+    os << std::left << std::setw(22) << timing.Technique << std::right << std::fixed
+       << std::setprecision(2) << std::setw(11) << timing.MeanMs << std::setw(11) << timing.MedianMs
+       << std::setw(10) << timing.RatioToHard << "\n";
+  }
+  os.unsetf(std::ios_base::floatfield);
+}
+
+//------------------------------------------------------------------------------
+void PrintTimingJson(std::ostream& os, const std::vector<Timing>& timings)
+{
+  for (const Timing& timing : timings)
+  {
+    nlohmann::ordered_json line;
+    line["technique"] = timing.Technique;
+    line["frames"] = timing.Frames;
+    line["mean_ms"] = Round3(timing.MeanMs);
+    line["median_ms"] = Round3(timing.MedianMs);
+    line["ratio_to_hard"] = Round3(timing.RatioToHard);
+    line["map_size"] = timing.MapSize;
+    line["size"] = timing.Size;
+    os << line.dump() << "\n";
+  }
+  os.flush();
+}
+}

@@ -1,0 +1,49 @@
+/**
+ * Frame timing of several techniques in one window, as `bench` and `gallery`
+ * report it.
+ */
+
+#ifndef softshadows_Benchmark_h
+#define softshadows_Benchmark_h
+
+#include "Techniques.h"
+
+#include <array>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+class vtkRenderWindow;
+class vtkRenderer;
+
+namespace softshadows
+{
+struct Timing
+{
+  std::string Technique;
+  int Frames = 0;
+  double MeanMs = 0.0;
+  double MedianMs = 0.0;
+  double RatioToHard = 0.0; ///< 0 when `hard` was not timed
+  int MapSize = 0;
+  std::array<int, 2> Size{ 0, 0 };
+};
+
+/**
+ * Draws `frames` timed frames of every technique, interleaved frame by frame
+ * after `warmUp` untimed rounds, moving the first light a little along a small
+ * orbit before each frame so every technique redraws its shadow maps. A
+ * frame's time runs from the start of Render() to glFinish() returning.
+ * Leaves the light where it started.
+ */
+std::vector<Timing> RunBenchmark(vtkRenderWindow* window, vtkRenderer* renderer,
+  std::vector<TechniqueInstance>& techniques, int frames, int warmUp, int mapSize);
+
+/// A table for people.
+void PrintTimingTable(std::ostream& os, const std::vector<Timing>& timings);
+
+/// One compact JSON object per line, keys as SPEC.md fixes them.
+void PrintTimingJson(std::ostream& os, const std::vector<Timing>& timings);
+}
+
+#endif

@@ -1,0 +1,37 @@
+/**
+ * Turns a checked Scene into VTK objects: a renderer with the scene's lights,
+ * actors and camera, and an off-screen window to draw it in.
+ */
+
+#ifndef softshadows_SceneBuilder_h
+#define softshadows_SceneBuilder_h
+
+#include "SceneFile.h"
+
+#include <vtkSmartPointer.h>
+
+#include <array>
+
+class vtkRenderWindow;
+class vtkRenderer;
+
+namespace softshadows
+{
+/**
+ * Makes the renderer: actors (meshes read or made, normals added where
+ * missing), scene lights with their radius, background and camera. Throws
+ * InputError at `actors[i].file` when a mesh file cannot be read.
+ */
+vtkSmartPointer<vtkRenderer> BuildRenderer(const Scene& scene);
+
+/**
+ * An off-screen window of `size` pixels showing `renderer`, without
+ * multisampling (the shadow passes draw into their own framebuffers), with
+ * an alpha channel when `withAlpha`. Throws std::runtime_error when there is
+ * no X display or OpenGL context.
+ */
+vtkSmartPointer<vtkRenderWindow> MakeWindow(
+  vtkRenderer* renderer, const std::array<int, 2>& size, bool withAlpha);
+}
+
+#endif

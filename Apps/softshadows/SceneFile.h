@@ -1,0 +1,107 @@
+/**
+ * A scene file (JSON, see the README) read and checked into plain structs.
+ *
+ * LoadScene() checks everything that can be checked without OpenGL: types,
+ * ranges, unknown fields, source and technique names and parameters, that
+ * mesh files exist. Errors are InputError with the field's path.
+ */
+
+#ifndef softshadows_SceneFile_h
+#define softshadows_SceneFile_h
+
+#include "JsonValues.h"
+
+#include <array>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace softshadows
+{
+struct SceneCamera
+{
+  bool Given = false; ///< false: fit the camera to the scene
+  Vector3 Position{ 0.0, 0.0, 1.0 };
+  Vector3 FocalPoint{ 0.0, 0.0, 0.0 };
+  Vector3 ViewUp{ 0.0, 1.0, 0.0 };
+  double ViewAngle = 30.0; ///< vertical, degrees
+};
+
+struct SceneLight
+{
+  enum class Kind
+  {
+    Spot,
+    Directional,
+    Point
+  };
+  Kind Type = Kind::Spot;
+  Vector3 Position{ 0.0, 0.0, 1.0 };
+  Vector3 FocalPoint{ 0.0, 0.0, 0.0 };
+  double ConeAngle = 30.0; ///< half angle, degrees
+  Vector3 Color{ 1.0, 1.0, 1.0 };
+  double Intensity = 1.0;
+  double Radius = 0.0; ///< world units; degrees for directional lights
+  double ShadowAttenuation = 1.0;
+};
+
+/// Mesh files an actor can read, told by the extension (any case).
+enum class MeshFormat
+{
+  VTP,
+  OBJ,
+  PLY,
+  STL
+};
+
+struct SceneActor
+{
+  std::string Path;   ///< `actors[i]`, for messages about it
+  std::string Source; ///< a built-in source, or empty when File is set
+  Json Parameters;    ///< the source's parameters, defaults filled in
+  std::filesystem::path File;
+  MeshFormat Format = MeshFormat::VTP; ///< of File
+  Vector3 Position{ 0.0, 0.0, 0.0 };
+  Vector3 Orientation{ 0.0, 0.0, 0.0 }; ///< degrees, as vtkProp3D
+  Vector3 Scale{ 1.0, 1.0, 1.0 };
+  Vector3 Color{ 0.8, 0.8, 0.8 };
+  double Opacity = 1.0;
+  bool PBR = false;
+  double Metallic = 0.0;
+  double Roughness = 0.5;
+};
+
+struct SceneShadows
+{
+  std::string Technique = "hard"; ///< a checked SPEC
+  int MapSize = 1024;
+  std::map<std::string, Json> Parameters; ///< checked, keyed by technique name
+
+  /// The scene's parameters for technique `name`: an object, maybe empty.
+  Json ParametersOf(const std::string& name) const;
+};
+
+struct Scene
+{
+  std::filesystem::path File;
+  std::string Name;
+  std::array<int, 2> Size{ 640, 480 };
+  Vector3 Background{ 0.2, 0.2, 0.2 };
+  SceneCamera Camera;
+  std::vector<SceneLight> Lights;
+  std::vector<SceneActor> Actors;
+  SceneShadows Shadows;
+};
+
+/**
+ * Reads and checks a scene file. Throws InputError; its Where() is a field
+ * path (empty for problems with the file as a whole).
+ */
+Scene LoadScene(const std::filesystem::path& file);
+
+/// Largest width or height accepted for a window.
+constexpr int MaximumWindowSize = 16384;
+}
+
+#endif

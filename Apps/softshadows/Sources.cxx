@@ -1,0 +1,215 @@
+#include "Sources.h"
+
+#include "vtkFenceSource.h"
+
+#include <vtkConeSource.h>
+#include <vtkCubeSource.h>
+#include <vtkCylinderSource.h>
+#include <vtkNew.h>
+#include <vtkParametricFunctionSource.h>
+#include <vtkParametricTorus.h>
+#include <vtkPlaneSource.h>
+#include <vtkPolyData.h>
+#include <vtkSphereSource.h>
+#include <vtkTransform.h>
+#include <vtkTransformPolyDataFilter.h>
+
+#include <algorithm>
+
+namespace softshadows
+{
+namespace
+{
+vtkSmartPointer<vtkPolyData> Output(vtkPolyDataAlgorithm* algorithm)
+{
+  algorithm->Update();
+  return algorithm->GetOutput();
+}
+
+// Sphere and torus tessellations use half as many segments across as around,
+// which keeps their facets roughly square.
+int Across(int around)
+{
+  return std::max(3, around / 2);
+}
+
+vtkSmartPointer<vtkPolyData> MakePlane(const Json& p)
+{
+  const auto size = Components(p["size"], 2);
+  const int resolution = p["resolution"].get<int>();
+  // Point1 along +z and Point2 along +x make the normal +y.
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-0.5 * size[0], 0.0, -0.5 * size[1]);
+  plane->SetPoint1(-0.5 * size[0], 0.0, 0.5 * size[1]);
+  plane->SetPoint2(0.5 * size[0], 0.0, -0.5 * size[1]);
+  plane->SetResolution(resolution, resolution);
+  return Output(plane);
+}
+
+vtkSmartPointer<vtkPolyData> MakeSphere(const Json& p)
+{
+  const int resolution = p["resolution"].get<int>();
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetRadius(p["radius"].get<double>());
+  sphere->SetThetaResolution(resolution);
+  sphere->SetPhiResolution(Across(resolution));
+  return Output(sphere);
+}
+
+vtkSmartPointer<vtkPolyData> MakeCube(const Json& p)
+{
+  const auto size = Components(p["size"], 3);
+  vtkNew<vtkCubeSource> cube;
+  cube->SetXLength(size[0]);
+  cube->SetYLength(size[1]);
+  cube->SetZLength(size[2]);
+  return Output(cube);
+}
+
+vtkSmartPointer<vtkPolyData> MakeCylinder(const Json& p)
+{
+  vtkNew<vtkCylinderSource> cylinder;
+  cylinder->SetRadius(p["radius"].get<double>());
+  cylinder->SetHeight(p["height"].get<double>());
+  cylinder->SetResolution(p["resolution"].get<int>());
+  cylinder->SetCapping(p["capping"].get<bool>());
+  return Output(cylinder);
+}
+
+vtkSmartPointer<vtkPolyData> MakeCone(const Json& p)
+{
+  vtkNew<vtkConeSource> cone;
+  cone->SetRadius(p["radius"].get<double>());
+  cone->SetHeight(p["height"].get<double>());
+  cone->SetResolution(p["resolution"].get<int>());
+  cone->SetCapping(p["capping"].get<bool>());
+  cone->SetDirection(0.0, 1.0, 0.0);
+  return Output(cone);
+}
+
+vtkSmartPointer<vtkPolyData> MakeTorus(const Json& p)
+{
+  const int resolution = p["resolution"].get<int>();
+  vtkNew<vtkParametricTorus> torus;
+  torus->SetRingRadius(p["ring_radius"].get<double>());
+  torus->SetCrossSectionRadius(p["cross_section_radius"].get<double>());
+  vtkNew<vtkParametricFunctionSource> surface;
+  surface->SetParametricFunction(torus);
+  surface->SetUResolution(resolution);
+  surface->SetVResolution(Across(resolution));
+  // vtkParametricTorus has its axis along z; lay it flat like the other sources.
+  vtkNew<vtkTransform> flat;
+  flat->RotateX(-90.0);
+  vtkNew<vtkTransformPolyDataFilter> transform;
+  transform->SetTransform(flat);
+  transform->SetInputConnection(surface->GetOutputPort());
+  return Output(transform);
+}
+
+vtkSmartPointer<vtkPolyData> MakeFence(const Json& p)
+{
+  vtkNew<vtkFenceSource> fence;
+  fence->SetNumberOfPickets(p["pickets"].get<int>());
+  fence->SetPicketWidth(p["picket_width"].get<double>());
+  fence->SetGap(p["gap"].get<double>());
+  fence->SetHeight(p["height"].get<double>());
+  fence->SetThickness(p["thickness"].get<double>());
+  return Output(fence);
+}
+
+const Range Segments = Range::Between(3, 1024);
+}
+
+//------------------------------------------------------------------------------
+const std::vector<Source>& Sources()
+{
+  static const std::vector<Source> sources = {
+    { "plane", "a rectangle on y = 0 facing +y, centred on the origin",
+      {
+        { "size", ValueType::Size2, Range::Positive(), 10.0, "extent along x and z" },
+        { "resolution", ValueType::Integer, Range::Between(1, 1024), 1,
+          "subdivisions along each side" },
+      },
+      MakePlane },
+    { "sphere", "a sphere centred on the origin",
+      {
+        { "radius", ValueType::Number, Range::Positive(), 0.5, "radius" },
+        { "resolution", ValueType::Integer, Segments, 32,
+          "segments around the y axis (half as many from pole to pole)" },
+      },
+      MakeSphere },
+    { "cube", "a box centred on the origin",
+      {
+        { "size", ValueType::Size3, Range::Positive(), 1.0, "edge lengths along x, y and z" },
+      },
+      MakeCube },
+    { "cylinder", "a cylinder along y centred on the origin",
+      {
+        { "radius", ValueType::Number, Range::Positive(), 0.5, "radius" },
+        { "height", ValueType::Number, Range::Positive(), 1.0, "length along y" },
+        { "resolution", ValueType::Integer, Segments, 32, "segments around the axis" },
+        { "capping", ValueType::Boolean, Range::Any(), true, "close both ends" },
+      },
+      MakeCylinder },
+    { "cone", "a cone along y pointing up, its axis' midpoint on the origin",
+      {
+        { "radius", ValueType::Number, Range::Positive(), 0.5, "radius of the base" },
+        { "height", ValueType::Number, Range::Positive(), 1.0, "base to apex along y" },
+        { "resolution", ValueType::Integer, Segments, 32, "segments around the axis" },
+        { "capping", ValueType::Boolean, Range::Any(), true, "close the base" },
+      },
+      MakeCone },
+    { "torus", "a ring lying flat (axis y) centred on the origin",
+      {
+        { "ring_radius", ValueType::Number, Range::Positive(), 1.0,
+          "from the axis to the centre of the tube" },
+        { "cross_section_radius", ValueType::Number, Range::Positive(), 0.5, "radius of the tube" },
+        { "resolution", ValueType::Integer, Segments, 48,
+          "segments around the axis (half as many around the tube)" },
+      },
+      MakeTorus },
+    { "fence", "vtkFenceSource: pickets on two rails, standing on y = 0 along x",
+      {
+        { "pickets", ValueType::Integer, Range::Between(1, 1000), 7, "number of pickets" },
+        { "picket_width", ValueType::Number, Range::Positive(), 0.1,
+          "width of a picket along x, also the height of a rail" },
+        { "gap", ValueType::Number, Range::AtLeast(0.0), 0.08, "space between pickets" },
+        { "height", ValueType::Number, Range::Positive(), 1.0, "height of the pickets" },
+        { "thickness", ValueType::Number, Range::Positive(), 0.05,
+          "depth of a picket or rail along z" },
+      },
+      MakeFence },
+  };
+  return sources;
+}
+
+//------------------------------------------------------------------------------
+const Source& FindSource(const std::string& name, const std::string& path)
+{
+  const auto& all = Sources();
+  const auto found =
+    std::find_if(all.begin(), all.end(), [&](const Source& source) { return source.Name == name; });
+  if (found == all.end())
+  {
+    throw InputError(path,
+      "unknown source '" + name + "' " +
+        KnownNames(all, [](const Source& source) { return source.Name; }));
+  }
+  return *found;
+}
+
+//------------------------------------------------------------------------------
+Json CompleteParameters(const Source& source, const Json& parameters, const std::string& path)
+{
+  CheckParameters(source.Parameters, parameters, path);
+  Json complete = parameters;
+  for (const SourceParameter& parameter : source.Parameters)
+  {
+    if (!complete.contains(parameter.Key))
+    {
+      complete[parameter.Key] = parameter.Default;
+    }
+  }
+  return complete;
+}
+}

@@ -1,0 +1,310 @@
+#include "Techniques.h"
+
+#include "vtkHardShadowPass.h"
+#include "vtkReferenceShadowPass.h"
+#include "vtkSoftShadowPass.h"
+
+#include <vtkCameraPass.h>
+#include <vtkNew.h>
+#include <vtkRenderPassCollection.h>
+#include <vtkSequencePass.h>
+#include <vtkShadowMapBakerPass.h>
+#include <vtkShadowMapPass.h>
+
+#include <algorithm>
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+
+namespace softshadows
+{
+namespace
+{
+template <typename PassType>
+PassType* Get(TechniqueInstance& instance)
+{
+  return PassType::SafeDownCast(instance.Shadows);
+}
+
+template <typename PassType>
+TechniqueInstance Wrap(vtkSmartPointer<PassType> pass)
+{
+  TechniqueInstance instance;
+  instance.Pass = pass;
+  instance.Shadows = pass;
+  return instance;
+}
+
+/// A parameter that reaches the pass through its Set/Get methods.
+template <typename PassType, typename Value>
+TechniqueParameter Bind(const char* key, ValueType type, const Range& allowed, const char* meaning,
+  void (PassType::*set)(Value), Value (PassType::*get)())
+{
+  return { key, type, allowed, meaning,
+    [set](TechniqueInstance& t, const Json& v) { (Get<PassType>(t)->*set)(v.get<Value>()); },
+    [get](TechniqueInstance& t) { return Json((Get<PassType>(t)->*get)()); } };
+}
+
+// Parameters every technique built on vtkSoftShadowPass shares.
+std::vector<TechniqueParameter> WithCommonParameters(std::vector<TechniqueParameter> own)
+{
+  own.push_back(
+    Bind<vtkSoftShadowPass, double>("slope_scaled_bias", ValueType::Number, Range::Any(),
+      "depth offset per unit of depth slope while drawing shadow maps (glPolygonOffset factor)",
+      &vtkSoftShadowPass::SetSlopeScaledBias, &vtkSoftShadowPass::GetSlopeScaledBias));
+  own.push_back(Bind<vtkSoftShadowPass, double>("constant_bias", ValueType::Number, Range::Any(),
+    "constant depth offset while drawing shadow maps (glPolygonOffset units)",
+    &vtkSoftShadowPass::SetConstantBias, &vtkSoftShadowPass::GetConstantBias));
+  own.push_back(
+    Bind<vtkSoftShadowPass, double>("normal_bias", ValueType::Number, Range::Between(0.0, 16.0),
+      "receiver offset along the surface normal, towards the light, in shadow-map texels",
+      &vtkSoftShadowPass::SetNormalBias, &vtkSoftShadowPass::GetNormalBias));
+  return own;
+}
+
+// VTK 9.1's own shadows, put together as its TestShadowMapPass does: the baker
+// draws the maps, then vtkShadowMapPass draws the opaque geometry with them.
+TechniqueInstance MakeVtkShadowMapPass()
+{
+  vtkNew<vtkShadowMapPass> shadows;
+  vtkNew<vtkRenderPassCollection> passes;
+  passes->AddItem(shadows->GetShadowMapBakerPass());
+  passes->AddItem(shadows);
+  vtkNew<vtkSequencePass> sequence;
+  sequence->SetPasses(passes);
+  auto camera = vtkSmartPointer<vtkCameraPass>::New();
+  camera->SetDelegatePass(sequence);
+
+  TechniqueInstance instance;
+  instance.Pass = camera;
+  instance.Baker = shadows->GetShadowMapBakerPass();
+  return instance;
+}
+
+// Prints `text` in lines of at most 100 columns, continuation lines indented
+// by `indent`; the first line starts at column `column`.
+void PrintWrapped(std::ostream& os, const std::string& text, int indent, int column = 0)
+{
+  const int width = 100;
+  os << std::string(static_cast<std::size_t>(std::max(0, indent - column)), ' ');
+  column = std::max(column, indent);
+  std::istringstream words(text);
+  std::string word;
+  bool first = true;
+  while (words >> word)
+  {
+    const int length = static_cast<int>(word.size());
+    if (!first && column + 1 + length > width)
+    {
+      os << "\n" << std::string(static_cast<std::size_t>(indent), ' ');
+      column = indent;
+      first = true;
+    }
+    os << (first ? "" : " ") << word;
+    column += length + (first ? 0 : 1);
+    first = false;
+  }
+  os << "\n";
+}
+
+const Technique* FindTechnique(const std::string& name)
+{
+  const auto& all = Techniques();
+  auto found = std::find_if(
+    all.begin(), all.end(), [&](const Technique& technique) { return technique.Name == name; });
+  return found == all.end() ? nullptr : &*found;
+}
+
+const Technique& RequireTechnique(const std::string& name, const std::string& where)
+{
+  if (const Technique* technique = FindTechnique(name))
+  {
+    return *technique;
+  }
+  throw InputError(where,
+    "unknown technique '" + name + "' " +
+      KnownNames(Techniques(), [](const Technique& technique) { return technique.Name; }));
+}
+
+void RequireVariant(
+  const Technique& technique, const std::string& variant, const std::string& where)
+{
+  if (technique.Variants.empty())
+  {
+    throw InputError(
+      where, "unknown variant '" + variant + "': technique '" + technique.Name + "' has none");
+  }
+  const auto& variants = technique.Variants;
+  const bool found = std::any_of(variants.begin(), variants.end(),
+    [&](const TechniqueVariant& candidate) { return candidate.Name == variant; });
+  if (!found)
+  {
+    throw InputError(where,
+      "unknown variant '" + variant + "' of technique '" + technique.Name + "' " +
+        KnownNames(variants, [](const TechniqueVariant& candidate) { return candidate.Name; }));
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+std::string TechniqueSpec::ToString() const
+{
+  return this->Variant.empty() ? this->Name : this->Name + ":" + this->Variant;
+}
+
+//------------------------------------------------------------------------------
+const std::vector<Technique>& Techniques()
+{
+  static const std::vector<Technique> techniques = {
+    { "hard", "vtkHardShadowPass: one shadow map per light, percentage-closer filtering", {},
+      WithCommonParameters({
+        Bind<vtkHardShadowPass, int>("pcf_radius", ValueType::Integer, Range::Between(0, 8),
+          "radius in texels of the square PCF kernel: a (2r+1)^2-texel footprint; 0 is one tap",
+          &vtkHardShadowPass::SetPCFRadius, &vtkHardShadowPass::GetPCFRadius),
+        Bind<vtkHardShadowPass, bool>("hardware_filtering", ValueType::Boolean, Range::Any(),
+          "bilinear depth-comparison filtering of every tap; off gives binary taps",
+          &vtkHardShadowPass::SetHardwareFiltering, &vtkHardShadowPass::GetHardwareFiltering),
+      }),
+      [](const std::string&) { return Wrap(vtkSmartPointer<vtkHardShadowPass>::New()); } },
+    { "reference",
+      "vtkReferenceShadowPass: ground truth, the average of many hard shadow maps drawn from "
+      "points sampled over each light (slow)",
+      {},
+      WithCommonParameters({
+        Bind<vtkReferenceShadowPass, int>("samples", ValueType::Integer, Range::Between(1, 4096),
+          "light samples (shadow maps) per light, rounded down to a square",
+          &vtkReferenceShadowPass::SetNumberOfSamples, &vtkReferenceShadowPass::GetNumberOfSamples),
+        Bind<vtkReferenceShadowPass, unsigned int>("seed", ValueType::Integer, Range::AtLeast(0),
+          "seed of the light sample jitter", &vtkReferenceShadowPass::SetSeed,
+          &vtkReferenceShadowPass::GetSeed),
+      }),
+      [](const std::string&) { return Wrap(vtkSmartPointer<vtkReferenceShadowPass>::New()); } },
+    { "vtk",
+      "VTK 9.1's vtkShadowMapPass and vtkShadowMapBakerPass, the baseline: hard shadows, "
+      "opaque geometry only, light radius ignored",
+      {}, {}, [](const std::string&) { return MakeVtkShadowMapPass(); } },
+  };
+  return techniques;
+}
+
+//------------------------------------------------------------------------------
+TechniqueSpec ParseTechniqueSpec(const std::string& text, const std::string& where)
+{
+  TechniqueSpec spec;
+  const auto colon = text.find(':');
+  spec.Name = text.substr(0, colon);
+  const Technique& technique = RequireTechnique(spec.Name, where);
+  if (colon != std::string::npos)
+  {
+    spec.Variant = text.substr(colon + 1);
+    RequireVariant(technique, spec.Variant, where);
+  }
+  return spec;
+}
+
+//------------------------------------------------------------------------------
+void CheckTechniqueParameters(
+  const std::string& name, const Json& parameters, const std::string& path)
+{
+  const Technique& technique = RequireTechnique(name, path);
+  if (!parameters.is_object())
+  {
+    throw InputError(path, "expected an object");
+  }
+  Json own = parameters;
+  if (own.contains("variant"))
+  {
+    const std::string variantPath = FieldPath(path, "variant");
+    RequireVariant(technique, ReadString(own["variant"], variantPath), variantPath);
+    own.erase("variant");
+  }
+  CheckParameters(technique.Parameters, own, path);
+}
+
+//------------------------------------------------------------------------------
+TechniqueInstance CreateTechnique(const TechniqueSpec& spec, int mapSize, const Json& parameters)
+{
+  const Technique& technique = RequireTechnique(spec.Name, "technique");
+  std::string variant = spec.Variant;
+  if (variant.empty() && parameters.contains("variant"))
+  {
+    variant = parameters["variant"].get<std::string>();
+  }
+  if (variant.empty() && !technique.Variants.empty())
+  {
+    variant = technique.Variants.front().Name;
+  }
+
+  TechniqueInstance instance = technique.Create(variant);
+  instance.Spec = spec.ToString();
+  if (instance.Shadows)
+  {
+    instance.Shadows->SetMapSize(mapSize);
+  }
+  if (instance.Baker)
+  {
+    instance.Baker->SetResolution(static_cast<unsigned int>(mapSize));
+  }
+  for (const TechniqueParameter& parameter : technique.Parameters)
+  {
+    if (parameters.contains(parameter.Key))
+    {
+      parameter.Apply(instance, parameters[parameter.Key]);
+    }
+  }
+  return instance;
+}
+
+//------------------------------------------------------------------------------
+void PrintTechniques(std::ostream& os)
+{
+  os << "Techniques, as --technique SPEC with SPEC = name[:variant]. Parameters go in the\n"
+        "scene's \"shadows\" object under the technique's name, e.g.\n"
+        "  \"shadows\": {\"technique\": \"hard\", \"map_size\": 2048, "
+        "\"hard\": {\"pcf_radius\": 2}}\n"
+        "and \"shadows.map_size\" (default 1024) sets every technique's shadow map size.\n";
+  for (const Technique& technique : Techniques())
+  {
+    os << "\n" << technique.Name << "\n";
+    PrintWrapped(os, technique.Summary, 2);
+    for (std::size_t i = 0; i < technique.Variants.size(); ++i)
+    {
+      const TechniqueVariant& variant = technique.Variants[i];
+      os << "  variant " << std::left << std::setw(12) << variant.Name;
+      PrintWrapped(os, variant.Meaning + (i == 0 ? " (default)" : ""), 22, 22);
+    }
+    if (technique.Parameters.empty())
+    {
+      os << "  (no parameters)\n";
+      continue;
+    }
+    TechniqueInstance defaults = technique.Create(
+      technique.Variants.empty() ? std::string() : technique.Variants.front().Name);
+    os << "  " << std::left << std::setw(20) << "parameter" << std::setw(9) << "type"
+       << std::setw(9) << "default"
+       << "meaning\n";
+    for (const TechniqueParameter& parameter : technique.Parameters)
+    {
+      const std::string range = parameter.Allowed.Describe();
+      os << "  " << std::left << std::setw(20) << parameter.Key << std::setw(9)
+         << TypeName(parameter.Type) << std::setw(9) << parameter.Current(defaults).dump();
+      PrintWrapped(os, parameter.Meaning + (range.empty() ? "" : "; " + range), 40, 40);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+std::vector<std::string> AllTechniqueSpecs()
+{
+  std::vector<std::string> specs;
+  for (const Technique& technique : Techniques())
+  {
+    specs.push_back(technique.Name);
+    for (std::size_t i = 1; i < technique.Variants.size(); ++i)
+    {
+      specs.push_back(technique.Name + ":" + technique.Variants[i].Name);
+    }
+  }
+  return specs;
+}
+}

@@ -1,0 +1,344 @@
+// softshadows: render, compare and time the soft-shadow techniques on scenes
+// described in JSON files. See README.md beside this file.
+
+#include "Benchmark.h"
+#include "CommandLine.h"
+#include "Images.h"
+#include "SceneBuilder.h"
+#include "SceneFile.h"
+#include "Techniques.h"
+
+#include "vtkSoftShadowPass.h"
+
+#include <vtkImageData.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <limits>
+#include <string>
+#include <vector>
+
+using namespace softshadows;
+
+namespace
+{
+const char* const Usage =
+  R"(Usage:
+  softshadows techniques [--specs]
+  softshadows render SCENE.json [--technique SPEC] [--size WxH] [--output FILE]
+                     [--shadow-only] [--light I]
+  softshadows bench SCENE.json --techniques SPEC,SPEC,... [--size WxH] [--frames N] [--json]
+  softshadows gallery SCENE.json --techniques SPEC,SPEC,... --output-dir DIR
+                     [--size WxH] [--frames N]
+
+A technique SPEC is name[:variant]; `softshadows techniques` lists them with
+their parameters. Rendering needs an X display: run under `xvfb-run -a`.
+
+  techniques   list techniques, variants and parameters; --specs prints only
+               every SPEC, one a line
+  render       draw the scene to FILE (default <scene name>-<technique>.png);
+               --shadow-only writes light I's visibility as grey + alpha
+  bench        time the techniques in one window, frames interleaved, the first
+               light moving; `hard` is added if missing; --json prints one JSON
+               object per technique and line
+  gallery      render each technique to DIR/<technique>.png, all of them side by
+               side, labelled, to DIR/gallery.png, and print their timings
+)";
+
+// Frames a technique draws, untimed, before `bench` and `gallery` time it:
+// the first compiles shaders and allocates maps.
+constexpr int WarmUpFrames = 3;
+
+/// Technique names as file names: `contact:multipass` -> `contact_multipass`.
+std::string FileNameOf(std::string text)
+{
+  for (char& c : text)
+  {
+    const bool plain =
+      std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '.' || c == '_';
+    c = plain ? c : '_';
+  }
+  return text;
+}
+
+/// Runs `step` and files any InputError it throws under the scene file.
+template <typename Step>
+auto InScene(const std::string& file, Step step)
+{
+  try
+  {
+    return step();
+  }
+  catch (const InputError& error)
+  {
+    throw error.InFile(file);
+  }
+}
+
+/// The scene, its renderer, the techniques requested and the window.
+class Session
+{
+public:
+  /// Loads the scene and makes `specs`' passes; no specs: the scene's technique.
+  Session(const CommandLine& line, std::vector<TechniqueSpec> specs)
+  {
+    this->Description = InScene(line.Scene(), [&] { return LoadScene(line.Scene()); });
+    const SceneShadows& shadows = this->Description.Shadows;
+    if (specs.empty())
+    {
+      // Checked when the scene was loaded.
+      specs.push_back(ParseTechniqueSpec(shadows.Technique, "shadows.technique"));
+    }
+    for (const TechniqueSpec& spec : specs)
+    {
+      this->Techniques.push_back(
+        CreateTechnique(spec, shadows.MapSize, shadows.ParametersOf(spec.Name)));
+    }
+    this->Renderer = InScene(line.Scene(), [&] { return BuildRenderer(this->Description); });
+  }
+
+  ~Session()
+  {
+    // Passes not on the renderer when the window goes are not released by
+    // it, and VTK's shadow map baker complains when destroyed unreleased.
+    if (!this->Window)
+    {
+      return;
+    }
+    for (const TechniqueInstance& technique : this->Techniques)
+    {
+      technique.Pass->ReleaseGraphicsResources(this->Window);
+    }
+  }
+
+  /// Opens the window: `size`, or the scene's size when `size` is {0, 0}.
+  vtkRenderWindow* OpenWindow(const std::array<int, 2>& size, bool withAlpha)
+  {
+    this->Window =
+      MakeWindow(this->Renderer, size[0] > 0 ? size : this->Description.Size, withAlpha);
+    return this->Window;
+  }
+
+  /// Draws one frame with `technique`.
+  void Render(const TechniqueInstance& technique)
+  {
+    this->Renderer->SetPass(technique.Pass);
+    this->Window->Render();
+  }
+
+  Session(const Session&) = delete;
+  Session& operator=(const Session&) = delete;
+
+  Scene Description;
+  vtkSmartPointer<vtkRenderer> Renderer;
+  std::vector<TechniqueInstance> Techniques;
+  vtkSmartPointer<vtkRenderWindow> Window;
+};
+
+std::vector<TechniqueSpec> WithHard(std::vector<TechniqueSpec> specs)
+{
+  for (const TechniqueSpec& spec : specs)
+  {
+    if (spec.Name == "hard")
+    {
+      return specs;
+    }
+  }
+  specs.insert(specs.begin(), ParseTechniqueSpec("hard", "hard"));
+  return specs;
+}
+
+int ListTechniques(const std::vector<std::string>& arguments)
+{
+  CommandLine line("techniques", arguments, false, {}, { "--specs" });
+  if (line.Has("--specs"))
+  {
+    for (const std::string& spec : AllTechniqueSpecs())
+    {
+      std::cout << spec << "\n";
+    }
+    return 0;
+  }
+  PrintTechniques(std::cout);
+  return 0;
+}
+
+int Render(const std::vector<std::string>& arguments)
+{
+  CommandLine line("render", arguments, true, { "--technique", "--size", "--output", "--light" },
+    { "--shadow-only" });
+  // Options first: their mistakes are found without reading the scene.
+  const bool shadowOnly = line.Has("--shadow-only");
+  if (line.Has("--light") && !shadowOnly)
+  {
+    throw InputError("--light", "only used with --shadow-only");
+  }
+  std::vector<TechniqueSpec> specs;
+  if (line.Has("--technique"))
+  {
+    specs.push_back(ParseTechniqueSpec(line.Value("--technique"), "--technique"));
+  }
+  const int lightIndex = line.Integer("--light", 0, std::numeric_limits<int>::max(), 0);
+  const std::array<int, 2> size = line.Size();
+
+  Session session(line, specs);
+  const Scene& scene = session.Description;
+  TechniqueInstance& technique = session.Techniques.front();
+  if (shadowOnly)
+  {
+    if (!technique.Shadows)
+    {
+      throw InputError("--shadow-only",
+        "technique '" + technique.Spec + "' (VTK's vtkShadowMapPass) has no shadow-only output");
+    }
+    if (lightIndex >= static_cast<int>(scene.Lights.size()))
+    {
+      throw InputError("--light",
+        "the scene has " + std::to_string(scene.Lights.size()) + " light(s); got index " +
+          std::to_string(lightIndex));
+    }
+    // Visibility in red, coverage in alpha: black, transparent background.
+    technique.Shadows->SetShadowOnlyLight(lightIndex);
+    session.Renderer->SetBackground(0.0, 0.0, 0.0);
+    session.Renderer->SetBackgroundAlpha(0.0);
+  }
+
+  const std::filesystem::path output = line.Has("--output")
+    ? std::filesystem::path(line.Value("--output"))
+    : std::filesystem::path(FileNameOf(scene.Name) + "-" + FileNameOf(technique.Spec) + ".png");
+
+  vtkRenderWindow* window = session.OpenWindow(size, shadowOnly);
+  session.Render(technique);
+  vtkSmartPointer<vtkImageData> image = CaptureWindow(window, shadowOnly);
+  WritePNG(shadowOnly ? GreyAndAlpha(image) : image, output);
+  std::cout << "wrote " << output.string() << "\n";
+  return 0;
+}
+
+int Bench(const std::vector<std::string>& arguments)
+{
+  CommandLine line(
+    "bench", arguments, true, { "--techniques", "--size", "--frames" }, { "--json" });
+  const std::vector<TechniqueSpec> specs = WithHard(line.TechniqueList("--techniques"));
+  const int frames = line.Integer("--frames", 1, 100000, 30);
+  const std::array<int, 2> size = line.Size();
+
+  Session session(line, specs);
+  vtkRenderWindow* window = session.OpenWindow(size, false);
+  const std::vector<Timing> timings = RunBenchmark(window, session.Renderer, session.Techniques,
+    frames, WarmUpFrames, session.Description.Shadows.MapSize);
+  if (line.Has("--json"))
+  {
+    PrintTimingJson(std::cout, timings);
+  }
+  else
+  {
+    PrintTimingTable(std::cout, timings);
+  }
+  return 0;
+}
+
+int Gallery(const std::vector<std::string>& arguments)
+{
+  CommandLine line(
+    "gallery", arguments, true, { "--techniques", "--output-dir", "--size", "--frames" }, {});
+  const std::vector<TechniqueSpec> shown = line.TechniqueList("--techniques");
+  const std::filesystem::path folder = line.Value("--output-dir");
+  const int frames = line.Integer("--frames", 1, 100000, 10);
+  const std::array<int, 2> size = line.Size();
+
+  // The timings need `hard` for their ratios; the pictures show what was asked.
+  Session session(line, WithHard(shown));
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  if (error)
+  {
+    throw std::runtime_error("cannot create " + folder.string() + ": " + error.message());
+  }
+
+  vtkRenderWindow* window = session.OpenWindow(size, false);
+  std::vector<vtkSmartPointer<vtkImageData>> tiles;
+  for (const TechniqueInstance& technique : session.Techniques)
+  {
+    const bool wanted = std::any_of(shown.begin(), shown.end(),
+      [&](const TechniqueSpec& spec) { return spec.ToString() == technique.Spec; });
+    if (!wanted)
+    {
+      continue;
+    }
+    session.Render(technique);
+    vtkSmartPointer<vtkImageData> image = CaptureWindow(window, false);
+    const std::filesystem::path file = folder / (FileNameOf(technique.Spec) + ".png");
+    WritePNG(image, file);
+    std::cout << "wrote " << file.string() << "\n";
+    DrawLabel(image, technique.Spec);
+    tiles.push_back(image);
+  }
+  const int count = static_cast<int>(tiles.size());
+  const int columns = count <= 3 ? count : static_cast<int>(std::ceil(std::sqrt(count)));
+  WritePNG(ComposeGrid(tiles, columns), folder / "gallery.png");
+  std::cout << "wrote " << (folder / "gallery.png").string() << "\n\n";
+
+  const std::vector<Timing> timings = RunBenchmark(window, session.Renderer, session.Techniques,
+    frames, WarmUpFrames, session.Description.Shadows.MapSize);
+  PrintTimingTable(std::cout, timings);
+  return 0;
+}
+
+int Run(const std::vector<std::string>& arguments)
+{
+  if (arguments.empty())
+  {
+    std::cerr << Usage;
+    return 2;
+  }
+  const std::string& command = arguments.front();
+  const std::vector<std::string> rest(arguments.begin() + 1, arguments.end());
+  if (command == "help" || command == "--help" || command == "-h")
+  {
+    std::cout << Usage;
+    return 0;
+  }
+  if (command == "techniques")
+  {
+    return ListTechniques(rest);
+  }
+  if (command == "render")
+  {
+    return Render(rest);
+  }
+  if (command == "bench")
+  {
+    return Bench(rest);
+  }
+  if (command == "gallery")
+  {
+    return Gallery(rest);
+  }
+  throw InputError(command, "unknown command (known: techniques, render, bench, gallery, help)");
+}
+}
+
+int main(int argc, char* argv[])
+{
+  try
+  {
+    return Run(std::vector<std::string>(argv + 1, argv + argc));
+  }
+  catch (const InputError& error)
+  {
+    std::cerr << (error.File().empty() ? "softshadows" : error.File()) << ": "
+              << (error.Where().empty() ? "" : error.Where() + ": ") << error.what() << "\n";
+    return 2;
+  }
+  catch (const std::exception& error)
+  {
+    std::cerr << "softshadows: error: " << error.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,37 @@
+# The Rendering module's sources, shared by the standalone build
+# (CMakeLists.txt here) and the remote-module build (cmake/RemoteModule.cmake).
+set(softshadows_rendering_classes
+  vtkHardShadowPass
+  vtkReferenceShadowPass
+  vtkSoftShadowPass)
+
+# Framework internals shared by the techniques; not part of the public API.
+set(softshadows_rendering_private_classes
+  vtkShadowMapManager
+  vtkShadowScreenBuffers)
+
+# Shaders live in glsl/ and are embedded as C strings at build time.
+set(softshadows_rendering_shaders
+  vtkShadowAccumulateFS
+  vtkShadowNormalOffsetFS
+  vtkShadowScreenCommonFS
+  vtkSoftShadowReceiverFS)
+
+# Sets <sources_var> and <headers_var> to the generated C strings of the
+# shaders in <glsl_dir>.
+function (softshadows_rendering_shaders sources_var headers_var glsl_dir)
+  set(sources)
+  set(headers)
+  foreach (shader IN LISTS softshadows_rendering_shaders)
+    vtk_encode_string(
+      INPUT         "${glsl_dir}/${shader}.glsl"
+      EXPORT_SYMBOL "VTKSOFTSHADOWSRENDERING_NO_EXPORT"
+      EXPORT_HEADER "vtkSoftShadowsRenderingModule.h"
+      HEADER_OUTPUT header
+      SOURCE_OUTPUT source)
+    list(APPEND sources "${source}")
+    list(APPEND headers "${header}")
+  endforeach ()
+  set("${sources_var}" "${sources}" PARENT_SCOPE)
+  set("${headers_var}" "${headers}" PARENT_SCOPE)
+endfunction ()

@@ -1,0 +1,26 @@
+# Remote-module build: one module, VTK::RenderingSoftShadows, whose library
+# name gives it the Rendering folder's export header; the Filters folder's
+# header is a forwarding shim.
+include("${CMAKE_CURRENT_LIST_DIR}/../Module/Sources.cmake")
+include("${CMAKE_CURRENT_LIST_DIR}/../Rendering/Sources.cmake")
+
+set(shim "${CMAKE_CURRENT_BINARY_DIR}/vtkSoftShadowsFiltersModule.h")
+file(WRITE "${shim}" "#include \"vtkSoftShadowsRenderingModule.h\"
+#define VTKSOFTSHADOWSFILTERS_EXPORT VTKSOFTSHADOWSRENDERING_EXPORT
+")
+
+softshadows_rendering_shaders(shader_sources shader_headers
+  "${CMAKE_CURRENT_LIST_DIR}/../Rendering/glsl")
+
+list(TRANSFORM softshadows_filters_classes PREPEND "Module/")
+list(TRANSFORM softshadows_rendering_classes PREPEND "Rendering/")
+list(TRANSFORM softshadows_rendering_private_classes PREPEND "Rendering/"
+  OUTPUT_VARIABLE private_classes)
+vtk_module_add_module(VTK::RenderingSoftShadows
+  CLASSES ${softshadows_filters_classes} ${softshadows_rendering_classes}
+  SOURCES ${shader_sources}
+  PRIVATE_CLASSES ${private_classes}
+  PRIVATE_HEADERS ${shader_headers} "${shim}")
+vtk_module_include(VTK::RenderingSoftShadows PRIVATE Module Rendering)
+vtk_module_find_package(PACKAGE glm)
+vtk_module_link(VTK::RenderingSoftShadows PRIVATE glm::glm)

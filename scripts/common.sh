@@ -1,0 +1,59 @@
+# shellcheck shell=bash
+# Shared by scripts/*.sh: the Debian 12 packages the project needs and a
+# function that installs the missing ones. Source it; it changes nothing by
+# itself.
+
+# Build tools, VTK 9.1 (C++ and Python), GLM, OpenMesh, JSON, and an X server
+# without a screen for rendering.
+# shellcheck disable=SC2034 # read by the scripts that source this file
+SOFTSHADOWS_PACKAGES=(
+  cmake g++ make
+  libvtk9-dev python3-vtk9
+  libglm-dev libopenmesh-dev nlohmann-json3-dev
+  xvfb xauth
+)
+
+# The repository's root folder, wherever the caller runs from.
+softshadows_root() {
+  (cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+}
+
+# Installs those of the packages given that are not installed yet, e.g.
+#   softshadows_install_packages "${SOFTSHADOWS_PACKAGES[@]}"
+# Runs apt-get only when something is missing: as root, or through sudo.
+softshadows_install_packages() {
+  local missing=()
+  local package
+  for package in "$@"; do
+    # dpkg -s also lists removed packages whose configuration remains.
+    if ! dpkg -s "$package" 2>/dev/null | grep -q '^Status: install ok installed'; then
+      missing+=("$package")
+    fi
+  done
+  if [ ${#missing[@]} -eq 0 ]; then
+    return 0
+  fi
+
+  local sudo=()
+  if [ "$(id -u)" -ne 0 ]; then
+    if ! command -v sudo >/dev/null 2>&1; then
+      echo "Missing packages: ${missing[*]}; run as root to install them." >&2
+      return 1
+    fi
+    sudo=(sudo)
+  fi
+  echo "Installing: ${missing[*]}" >&2
+  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update
+  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y "${missing[@]}"
+}
+
+# Configures build/ (Release) unless it is configured already, then builds it.
+softshadows_build() {
+  local root build
+  root=$(softshadows_root)
+  build="$root/build"
+  if [ ! -f "$build/CMakeCache.txt" ]; then
+    cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release
+  fi
+  cmake --build "$build" -j2
+}

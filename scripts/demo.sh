@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# The demo, unattended on a fresh Debian 12 (as root): installs what is
+# missing, builds, and renders Examples/Scenes/demo.json with every technique
+# into out/: one PNG per technique and out/gallery.png side by side, then
+# prints how long each technique takes per frame.
+set -euo pipefail
+
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+cd "$(softshadows_root)"
+
+softshadows_install_packages "${SOFTSHADOWS_PACKAGES[@]}"
+softshadows_build
+
+techniques=$(build/bin/softshadows techniques --specs | paste -sd, -)
+xvfb-run -a build/bin/softshadows gallery Examples/Scenes/demo.json \
+  --techniques "$techniques" --output-dir out
