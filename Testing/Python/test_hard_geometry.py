@@ -6,7 +6,8 @@ import numpy as np
 import shadowtest as st
 
 for params, label in [({"pcf_radius": 0, "hardware_filtering": False}, "binary"),
-                      ({}, "default PCF")]:
+                      ({}, "default"),
+                      ({"pcf_radius": 2}, "PCF radius 2")]:
     scene = st.ball_scene(height=1.0, params=params, size=(240, 180))
     visibility, geometry = st.shadow_only(scene)
     ground, shadowed, edge = st.expected_hard_shadow(scene)
@@ -15,7 +16,10 @@ for params, label in [({"pcf_radius": 0, "hardware_filtering": False}, "binary")
     st.check(geometry[ground].all(), "%s: alpha marks every ground pixel" % label)
     st.check(not geometry[0, :].any(), "%s: bottom row (off the ground) is background" % label)
 
-    far = ground & (edge > 2.0)
+    # Two pixels from the edge, plus the PCF footprint (about 1.5 screen
+    # pixels per map texel here).
+    margin = 2.0 + 1.5 * params.get("pcf_radius", 0)
+    far = ground & (edge > margin)
     umbra = far & shadowed
     lit = far & ~shadowed
     st.check(umbra.sum() > 300 and lit.sum() > 10000,
