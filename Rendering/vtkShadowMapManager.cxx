@@ -75,6 +75,14 @@ int vtkShadowMapManager::Update(vtkRenderer* renderer, std::vector<vtkLight*>* u
   {
     return 0; // nothing to shadow
   }
+  if (!std::all_of(
+        this->SceneBounds, this->SceneBounds + 6, [](double v) { return std::isfinite(v); }))
+  {
+    vtkGenericWarningMacro("Scene bounds are not finite (NaN or infinite points in a visible "
+                           "prop): no shadows this frame.");
+    vtkMath::UninitializeBounds(this->SceneBounds);
+    return 0;
+  }
   renderer->UpdateLightsGeometryToFollowCamera();
 
   // Mappers number the lights that are switched on, in collection order.
