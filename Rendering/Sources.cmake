@@ -1,6 +1,7 @@
 # The Rendering module's sources, shared by the standalone build
 # (CMakeLists.txt here) and the remote-module build (cmake/RemoteModule.cmake).
 set(softshadows_rendering_classes
+  vtkContactHardeningShadowPass
   vtkHardShadowPass
   vtkReferenceShadowPass
   vtkSoftShadowPass)
@@ -12,6 +13,13 @@ set(softshadows_rendering_private_classes
 
 # Shaders live in glsl/ and are embedded as C strings at build time.
 set(softshadows_rendering_shaders
+  vtkContactCommonFS
+  vtkContactDistanceFS
+  vtkContactGaussianFS
+  vtkContactMultiPassFS
+  vtkContactPCFFS
+  vtkContactPrepareFS
+  vtkContactResolveFS
   vtkShadowAccumulateFS
   vtkShadowNormalOffsetFS
   vtkShadowScreenCommonFS

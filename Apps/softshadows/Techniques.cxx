@@ -1,5 +1,6 @@
 #include "Techniques.h"
 
+#include "vtkContactHardeningShadowPass.h"
 #include "vtkHardShadowPass.h"
 #include "vtkReferenceShadowPass.h"
 #include "vtkSoftShadowPass.h"
@@ -179,6 +180,83 @@ const std::vector<Technique>& Techniques()
           &vtkReferenceShadowPass::GetSeed),
       }),
       [](const std::string&) { return Wrap(vtkSmartPointer<vtkReferenceShadowPass>::New()); } },
+    { "contact",
+      "vtkContactHardeningShadowPass: contact-hardening soft shadows in screen space (Cherry & "
+      "Kooima): a distance map of S and D, then S softened with a D-sized filter",
+      { { "multipass", "up to pass_limit Poisson-disk Gaussian blurs, D counting them down" },
+        { "pcf", "one box filter of D pixels" },
+        { "gaussian", "one separable Gaussian blur of D pixels" } },
+      WithCommonParameters({
+        Bind<vtkContactHardeningShadowPass, bool>("use_light_size", ValueType::Boolean,
+          Range::Any(),
+          "size kernels from the light's radius, w = (d_receiver - d_blocker) * w_light / "
+          "d_blocker; off uses dp and dm",
+          &vtkContactHardeningShadowPass::SetUseLightSize,
+          &vtkContactHardeningShadowPass::GetUseLightSize),
+        Bind<vtkContactHardeningShadowPass, double>("dp", ValueType::Number,
+          Range::Between(0.0, 16.0), "distance power Dp in D = (occluder distance)^Dp * Dm",
+          &vtkContactHardeningShadowPass::SetDistancePower,
+          &vtkContactHardeningShadowPass::GetDistancePower),
+        Bind<vtkContactHardeningShadowPass, double>("dm", ValueType::Number,
+          Range::Between(0.0, 1.0e9), "distance multiplier Dm in D = (occluder distance)^Dp * Dm",
+          &vtkContactHardeningShadowPass::SetDistanceMultiplier,
+          &vtkContactHardeningShadowPass::GetDistanceMultiplier),
+        Bind<vtkContactHardeningShadowPass, int>("pass_limit", ValueType::Integer,
+          Range::Between(1, 64), "most blur passes (multipass)",
+          &vtkContactHardeningShadowPass::SetPassLimit,
+          &vtkContactHardeningShadowPass::GetPassLimit),
+        Bind<vtkContactHardeningShadowPass, int>("min_kernel", ValueType::Integer,
+          Range::Between(1, 255), "first kernel size in pixels when the kernel grows (multipass)",
+          &vtkContactHardeningShadowPass::SetMinimumKernelSize,
+          &vtkContactHardeningShadowPass::GetMinimumKernelSize),
+        Bind<vtkContactHardeningShadowPass, int>("max_kernel", ValueType::Integer,
+          Range::Between(1, 255), "largest kernel size in pixels",
+          &vtkContactHardeningShadowPass::SetMaximumKernelSize,
+          &vtkContactHardeningShadowPass::GetMaximumKernelSize),
+        Bind<vtkContactHardeningShadowPass, bool>("growing_kernel", ValueType::Boolean,
+          Range::Any(), "grow the kernel by 2 pixels a pass from min_kernel (multipass)",
+          &vtkContactHardeningShadowPass::SetGrowingKernel,
+          &vtkContactHardeningShadowPass::GetGrowingKernel),
+        Bind<vtkContactHardeningShadowPass, int>("taps", ValueType::Integer, Range::Between(1, 64),
+          "Poisson-disk taps per blur (multipass)", &vtkContactHardeningShadowPass::SetPoissonTaps,
+          &vtkContactHardeningShadowPass::GetPoissonTaps),
+        Bind<vtkContactHardeningShadowPass, bool>("dilation", ValueType::Boolean, Range::Any(),
+          "spread D to lit pixels near shadows: the outer penumbra (pass 3)",
+          &vtkContactHardeningShadowPass::SetDilation, &vtkContactHardeningShadowPass::GetDilation),
+        Bind<vtkContactHardeningShadowPass, int>("dilation_size", ValueType::Integer,
+          Range::Between(1, 255), "dilation kernel size in pixels",
+          &vtkContactHardeningShadowPass::SetDilationSize,
+          &vtkContactHardeningShadowPass::GetDilationSize),
+        Bind<vtkContactHardeningShadowPass, bool>("early_out", ValueType::Boolean, Range::Any(),
+          "D = 0 deep inside the umbra, so blurs skip it",
+          &vtkContactHardeningShadowPass::SetUmbraEarlyOut,
+          &vtkContactHardeningShadowPass::GetUmbraEarlyOut),
+        Bind<vtkContactHardeningShadowPass, int>("early_out_size", ValueType::Integer,
+          Range::Between(1, 255), "early-out neighbourhood in pixels (above max_kernel)",
+          &vtkContactHardeningShadowPass::SetEarlyOutKernelSize,
+          &vtkContactHardeningShadowPass::GetEarlyOutKernelSize),
+        Bind<vtkContactHardeningShadowPass, bool>("debug_view", ValueType::Boolean, Range::Any(),
+          "mark umbra (grey) and penumbra (dark) as in the paper's figure 4",
+          &vtkContactHardeningShadowPass::SetDebugView,
+          &vtkContactHardeningShadowPass::GetDebugView),
+      }),
+      [](const std::string& variant)
+      {
+        auto pass = vtkSmartPointer<vtkContactHardeningShadowPass>::New();
+        if (variant == "pcf")
+        {
+          pass->SetVariantToPCF();
+        }
+        else if (variant == "gaussian")
+        {
+          pass->SetVariantToGaussian();
+        }
+        else
+        {
+          pass->SetVariantToMultiPass();
+        }
+        return Wrap(pass);
+      } },
     { "vtk",
       "VTK 9.1's vtkShadowMapPass and vtkShadowMapBakerPass, the baseline: hard shadows, "
       "opaque geometry only, light radius ignored",

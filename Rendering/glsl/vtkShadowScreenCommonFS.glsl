@@ -7,9 +7,11 @@ in vec2 texCoord;
 uniform sampler2D vtkScreenDepth;
 uniform mat4 vtkScreenClipToWorld;
 
+// This pixel. From texCoord rather than gl_FragCoord so that every pass uses
+// the quad's texture coordinates (VTK's quad helper binds them).
 ivec2 vtkScreenPixel()
 {
-  return ivec2(gl_FragCoord.xy);
+  return ivec2(texCoord * vec2(textureSize(vtkScreenDepth, 0)));
 }
 
 float vtkScreenDepthAt(ivec2 pixel)

@@ -1,0 +1,96 @@
+// Pass 2 (section 3.2): the distance map. S from the hard shadow test, D from
+// the occluder distance: (distance)^Dp * Dm, or, with the light's size, the
+// penumbra width w = (d_receiver - d_blocker) * w_light / d_blocker (section
+// 6) in pixels, as a kernel size (PCF, Gaussian) or a number of blur passes
+// (multi-pass).
+uniform sampler2D lightDepth; // raw depth: read through a non-comparing sampler
+uniform mat4 mapWorldToMap;
+uniform vec4 mapEye;
+uniform vec3 mapAxis;
+uniform vec2 mapFootprint;
+uniform vec2 mapDepthRange; // near, far
+uniform float normalBias;
+
+uniform bool useLightSize;
+uniform float lightSize; // spot: diameter; directional: 2 tan(angular radius)
+uniform float distancePower;
+uniform float distanceMultiplier;
+uniform vec3 cameraPosition;
+uniform vec2 pixelFootprint; // world size of a pixel: x + y * camera distance
+
+uniform bool countPasses; // multi-pass: D is a number of passes
+uniform int passLimit;
+uniform int minimumKernel;
+uniform int maximumKernel;
+uniform bool growingKernel;
+uniform float kernelVariance; // variance of one blur per pixel^2 of kernel size^2
+
+// Distance along the light's axis for a map depth in [0,1].
+float vtkContactLightDistance(float depth)
+{
+  float n = mapDepthRange.x;
+  float f = mapDepthRange.y;
+  return mapEye.w > 0.0 ? n * f / (f - depth * (f - n)) : n + depth * (f - n);
+}
+
+// Blur passes whose summed variance reaches a Gaussian of full width `width`
+// (about 4 sigma, 2% to 98%).
+float vtkContactPassesFor(float width)
+{
+  float target = 0.0625 * width * width;
+  float variance = 0.0;
+  for (int k = 0; k < passLimit; ++k)
+  {
+    if (variance >= target)
+    {
+      return float(k);
+    }
+    float size = growingKernel ? float(min(minimumKernel + 2 * k, maximumKernel))
+                               : float(maximumKernel);
+    variance += kernelVariance * size * size;
+  }
+  return float(passLimit);
+}
+
+void main()
+{
+  float depth;
+  if (!vtkScreenHasSurface(depth))
+  {
+    gl_FragData[0] = vec4(0.0, -1.0, 0.0, 0.0);
+    return;
+  }
+  vec3 position = vtkScreenPositionWC(texCoord, depth);
+  vec3 normal = vtkScreenNormalWC(depth, position);
+  float cameraDistance = distance(position, cameraPosition);
+  vec4 receiver = vtkShadowNormalOffset(
+    vec4(position, 1.0), normal, mapEye, mapAxis, mapFootprint, normalBias);
+  vec4 p = mapWorldToMap * receiver;
+  p.xyz /= p.w;
+  if (p.w <= 0.0 || any(lessThan(p.xyz, vec3(0.0))) || any(greaterThan(p.xyz, vec3(1.0))))
+  {
+    gl_FragData[0] = vec4(0.0, 0.0, cameraDistance, 0.0);
+    return;
+  }
+  float blockerDepth = texture(lightDepth, p.xy).r;
+  if (p.z <= blockerDepth)
+  {
+    gl_FragData[0] = vec4(0.0, 0.0, cameraDistance, 0.0);
+    return;
+  }
+  float receiverDistance = vtkContactLightDistance(p.z);
+  float blockerDistance = vtkContactLightDistance(blockerDepth);
+  float occluderDistance = max(receiverDistance - blockerDistance, 0.0);
+  float d;
+  if (useLightSize)
+  {
+    float world = occluderDistance * lightSize / (mapEye.w > 0.0 ? blockerDistance : 1.0);
+    float pixels = world / (pixelFootprint.x + pixelFootprint.y * cameraDistance);
+    d = countPasses ? vtkContactPassesFor(pixels) : pixels;
+  }
+  else
+  {
+    d = pow(occluderDistance, distancePower) * distanceMultiplier;
+  }
+  gl_FragData[0] = vec4(1.0, d, cameraDistance, 0.0);
+}

@@ -1,0 +1,35 @@
+// Pass 4, multi-pass variant: one Poisson-disk Gaussian blur of S over a
+// kernel of `kernelSize` pixels (sigma = size / 3, weights normalised), for
+// pixels whose D is still positive; D drops by one. Pixels that just reached
+// D = 0 are copied once more so both ping-pong buffers agree, then marked -1
+// and skipped.
+uniform vec3 taps[64];
+uniform int tapCount;
+uniform float kernelSize;
+
+void main()
+{
+  ivec2 pixel = vtkScreenPixel();
+  vec4 c = vtkContactFetch(pixel);
+  if (c.g < 0.0)
+  {
+    discard;
+  }
+  if (c.g == 0.0)
+  {
+    gl_FragData[0] = vec4(c.r, -1.0, c.b, 0.0);
+    return;
+  }
+  float sum = 0.0;
+  float weights = 0.0;
+  for (int i = 0; i < tapCount; ++i)
+  {
+    vec4 t = vtkContactFetch(pixel + ivec2(round(taps[i].xy * 0.5 * kernelSize)));
+    if (vtkContactSameSurface(c, t))
+    {
+      sum += taps[i].z * t.r;
+      weights += taps[i].z;
+    }
+  }
+  gl_FragData[0] = vec4(sum / weights, max(c.g - 1.0, 0.0), c.b, 0.0);
+}

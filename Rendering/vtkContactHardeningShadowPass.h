@@ -1,0 +1,194 @@
+/**
+ * @class   vtkContactHardeningShadowPass
+ * @brief   Contact-hardening soft shadows in screen space (Cherry & Kooima,
+ *          "Multi-pass Gaussian Contact-hardening Soft Shadows").
+ *
+ * Technique `contact`. After each light's shadow map (pass 1), a screen-space
+ * distance map holds, per pixel, S (1 shadowed, 0 lit) and D, the kernel
+ * control (pass 2, section 3.2). Optional passes turn D to 0 deep inside the
+ * umbra (the early-out of section 5) and dilate D outwards (pass 3). Pass 4
+ * then softens S with one of three variants:
+ *
+ *  - PCF: a box average of S over a D-sized kernel,
+ *  - Gaussian: one separable Gaussian blur of S with a D-sized kernel,
+ *  - MultiPass: up to PassLimit Poisson-disk Gaussian blurs of S (PoissonTaps
+ *    precomputed points in [-1,1]^2, the first at the origin, normalised
+ *    weights, sigma = size / 3), the kernel fixed or growing from
+ *    MinimumKernelSize to MaximumKernelSize; D drops by one each pass and
+ *    pixels at D = 0 are left alone.
+ *
+ * The receivers are shaded with 1 - S (pass 5).
+ *
+ * D comes either from the paper's D = (occluder distance)^Dp * Dm
+ * (UseLightSize off: DistancePower and DistanceMultiplier, tuned per scene), or,
+ * beyond the paper (its section 6), from the light's radius
+ * (vtkSoftShadowPass::SetRadius): the penumbra width
+ * w = (d_receiver - d_blocker) * w_light / d_blocker, in pixels at the
+ * receiver, sizes the PCF and Gaussian kernels and sets how many multi-pass
+ * blurs a pixel needs. That is the default: the same scene looks right
+ * without tuning.
+ *
+ * Also beyond the paper: blur taps across depth discontinuities of the view
+ * are ignored, so shadows do not bleed from a floor onto an object in front.
+ * Translucent surfaces receive the hard shadow of the light's map.
+ *
+ * Needs OpenGL 3.3 (sampler objects, to read the shadow map's raw depth);
+ * without it the pass reports an error once and draws no shadows.
+ */
+
+#ifndef vtkContactHardeningShadowPass_h
+#define vtkContactHardeningShadowPass_h
+
+#include "vtkSoftShadowPass.h"
+
+#include <memory> // for std::unique_ptr
+
+class VTKSOFTSHADOWSRENDERING_EXPORT vtkContactHardeningShadowPass : public vtkSoftShadowPass
+{
+public:
+  static vtkContactHardeningShadowPass* New();
+  vtkTypeMacro(vtkContactHardeningShadowPass, vtkSoftShadowPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+  enum Variants
+  {
+    PCF = 0,
+    Gaussian = 1,
+    MultiPass = 2
+  };
+
+  ///@{
+  /**
+   * The pass-4 filter. Default MultiPass.
+   */
+  vtkSetClampMacro(Variant, int, PCF, MultiPass);
+  vtkGetMacro(Variant, int);
+  void SetVariantToPCF() { this->SetVariant(PCF); }
+  void SetVariantToGaussian() { this->SetVariant(Gaussian); }
+  void SetVariantToMultiPass() { this->SetVariant(MultiPass); }
+  ///@}
+
+  ///@{
+  /**
+   * Size kernels from the light's radius (on) or from DistancePower and
+   * DistanceMultiplier (off, the paper's way). Default on.
+   */
+  vtkSetMacro(UseLightSize, bool);
+  vtkGetMacro(UseLightSize, bool);
+  vtkBooleanMacro(UseLightSize, bool);
+  ///@}
+
+  ///@{
+  /**
+   * D = (occluder distance)^DistancePower * DistanceMultiplier, the distance
+   * in world units, when UseLightSize is off. Defaults 3.0 and 200 (the
+   * paper's ball scene).
+   */
+  vtkSetClampMacro(DistancePower, double, 0.0, 16.0);
+  vtkGetMacro(DistancePower, double);
+  vtkSetClampMacro(DistanceMultiplier, double, 0.0, 1.0e9);
+  vtkGetMacro(DistanceMultiplier, double);
+  ///@}
+
+  ///@{
+  /**
+   * Most blur passes of the MultiPass variant. Default 10.
+   */
+  vtkSetClampMacro(PassLimit, int, 1, 64);
+  vtkGetMacro(PassLimit, int);
+  ///@}
+
+  ///@{
+  /**
+   * Kernel sizes in pixels (full width). MultiPass grows its kernel from
+   * MinimumKernelSize by 2 pixels a pass up to MaximumKernelSize when
+   * GrowingKernel is on, else uses MaximumKernelSize throughout; PCF and
+   * Gaussian kernels are clamped to MaximumKernelSize. Defaults 3, 19, on.
+   */
+  vtkSetClampMacro(MinimumKernelSize, int, 1, 255);
+  vtkGetMacro(MinimumKernelSize, int);
+  vtkSetClampMacro(MaximumKernelSize, int, 1, 255);
+  vtkGetMacro(MaximumKernelSize, int);
+  vtkSetMacro(GrowingKernel, bool);
+  vtkGetMacro(GrowingKernel, bool);
+  vtkBooleanMacro(GrowingKernel, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Poisson-disk taps per MultiPass blur, 1 to 64. Default 20.
+   */
+  vtkSetClampMacro(PoissonTaps, int, 1, 64);
+  vtkGetMacro(PoissonTaps, int);
+  ///@}
+
+  ///@{
+  /**
+   * Pass 3: spread D outwards over DilationSize pixels (a Gaussian-weighted
+   * mean of the shadowed neighbours' D, given to lit pixels), which makes the
+   * outer half of the penumbra. Defaults on, 9.
+   */
+  vtkSetMacro(Dilation, bool);
+  vtkGetMacro(Dilation, bool);
+  vtkBooleanMacro(Dilation, bool);
+  vtkSetClampMacro(DilationSize, int, 1, 255);
+  vtkGetMacro(DilationSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * Umbra early-out: D = 0 where every tap over EarlyOutKernelSize pixels
+   * (which should exceed MaximumKernelSize) is shadowed, so blurs skip the
+   * inside of the umbra. Defaults on, 25.
+   */
+  vtkSetMacro(UmbraEarlyOut, bool);
+  vtkGetMacro(UmbraEarlyOut, bool);
+  vtkBooleanMacro(UmbraEarlyOut, bool);
+  vtkSetClampMacro(EarlyOutKernelSize, int, 1, 255);
+  vtkGetMacro(EarlyOutKernelSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * Debug view of the paper's figure 4: the visibility becomes 1 where lit,
+   * 0.5 in the umbra and 0.1 in the penumbra, so the penumbra shows as a dark
+   * band around a grey umbra. Default off.
+   */
+  vtkSetMacro(DebugView, bool);
+  vtkGetMacro(DebugView, bool);
+  vtkBooleanMacro(DebugView, bool);
+  ///@}
+
+protected:
+  vtkContactHardeningShadowPass();
+  ~vtkContactHardeningShadowPass() override;
+
+  bool RenderShadowMaps(const vtkRenderState* s) override;
+  bool RenderScreenSpace(const vtkRenderState* s) override;
+  bool UsesScreenSpace() const override { return true; }
+
+  int Variant = MultiPass;
+  bool UseLightSize = true;
+  double DistancePower = 3.0;
+  double DistanceMultiplier = 200.0;
+  int PassLimit = 10;
+  int MinimumKernelSize = 3;
+  int MaximumKernelSize = 19;
+  bool GrowingKernel = true;
+  int PoissonTaps = 20;
+  bool Dilation = true;
+  int DilationSize = 9;
+  bool UmbraEarlyOut = true;
+  int EarlyOutKernelSize = 25;
+  bool DebugView = false;
+
+private:
+  vtkContactHardeningShadowPass(const vtkContactHardeningShadowPass&) = delete;
+  void operator=(const vtkContactHardeningShadowPass&) = delete;
+
+  class vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif
