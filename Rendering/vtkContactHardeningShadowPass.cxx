@@ -90,6 +90,8 @@ public:
   std::unique_ptr<vtkOpenGLQuadHelper> Distance, Prepare, MultiPass, PCF, Gaussian, Resolve;
   // Contact maps: [0] pass 2's output, [1] and [2] the ping-pong pair.
   std::array<vtkSmartPointer<vtkTextureObject>, 3> Maps;
+  // Depth used as a pixel mask: 0 where blurs work (see the prepare pass).
+  vtkSmartPointer<vtkTextureObject> Mask;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   unsigned int RawDepthSampler = 0; // reads a depth map without comparison
   bool Unsupported = false;
@@ -121,13 +123,15 @@ public:
 
   void Draw(vtkShadowScreenBuffers* screen, std::unique_ptr<vtkOpenGLQuadHelper>& quad,
     vtkTextureObject* input, const std::function<void(vtkShaderProgram*)>& uniforms,
-    float depthTolerance, bool debugView)
+    float depthTolerance, bool debugView,
+    vtkShadowScreenBuffers::QuadMask mask = vtkShadowScreenBuffers::QuadMask::None)
   {
     if (input)
     {
       input->Activate();
     }
-    screen->DrawQuad(quad.get(),
+    screen->DrawQuad(
+      quad.get(),
       [&](vtkShaderProgram* program)
       {
         if (input)
@@ -137,18 +141,24 @@ public:
         program->SetUniformf("contactDepthTolerance", depthTolerance);
         program->SetUniformi("contactDebugView", debugView ? 1 : 0);
         uniforms(program);
-      });
+      },
+      mask);
     if (input)
     {
       input->Deactivate();
     }
   }
 
-  /// Bind the framebuffer with `first` (and `second`) as colour targets.
+  /// Bind the framebuffer with `first` (and `second`) as colour targets and,
+  /// when `masked`, the blur mask as depth.
   void Target(vtkOpenGLRenderWindow* context, int w, int h, vtkTextureObject* first,
-    vtkTextureObject* second = nullptr)
+    vtkTextureObject* second = nullptr, bool masked = false)
   {
     this->Framebuffer->Bind();
+    if (masked)
+    {
+      this->Framebuffer->AddDepthAttachment(this->Mask);
+    }
     this->Framebuffer->AddColorAttachment(0, first);
     if (second)
     {
@@ -235,6 +245,13 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
     }
     map->Resize(w, h);
   }
+  if (!in.Mask)
+  {
+    in.Mask = vtkSmartPointer<vtkTextureObject>::New();
+    in.Mask->SetContext(context);
+    in.Mask->AllocateDepth(w, h, vtkTextureObject::Fixed24);
+  }
+  in.Mask->Resize(w, h);
   if (!in.Framebuffer)
   {
     in.Framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
@@ -302,7 +319,7 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
     in.Untarget();
 
     // Umbra early-out and pass 3, into both ping-pong buffers.
-    in.Target(context, w, h, in.Maps[1], in.Maps[2]);
+    in.Target(context, w, h, in.Maps[1], in.Maps[2], true);
     in.Draw(
       this->Screen.get(), in.Prepare, in.Maps[0],
       [&](vtkShaderProgram* program)
@@ -314,7 +331,7 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
         program->SetUniform3fv("taps", this->PoissonTaps, taps.data());
         program->SetUniformi("tapCount", this->PoissonTaps);
       },
-      tolerance, this->DebugView);
+      tolerance, this->DebugView, vtkShadowScreenBuffers::QuadMask::Write);
     in.Untarget();
 
     // Pass 4, and pass 5's visibility into the framework's texture.
@@ -400,13 +417,13 @@ void vtkContactHardeningShadowPass::ReleaseGraphicsResources(vtkWindow* w)
   {
     quad->reset();
   }
-  for (auto& map : in.Maps)
+  for (auto* texture : { &in.Maps[0], &in.Maps[1], &in.Maps[2], &in.Mask })
   {
-    if (map)
+    if (*texture)
     {
-      map->ReleaseGraphicsResources(w);
+      (*texture)->ReleaseGraphicsResources(w);
     }
-    map = nullptr;
+    *texture = nullptr;
   }
   if (in.Framebuffer)
   {

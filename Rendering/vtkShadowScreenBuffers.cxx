@@ -82,12 +82,29 @@ std::unique_ptr<vtkOpenGLQuadHelper> vtkShadowScreenBuffers::CreateQuad(
 }
 
 //------------------------------------------------------------------------------
-void vtkShadowScreenBuffers::DrawQuad(
-  vtkOpenGLQuadHelper* quad, const std::function<void(vtkShaderProgram*)>& setUniforms)
+void vtkShadowScreenBuffers::DrawQuad(vtkOpenGLQuadHelper* quad,
+  const std::function<void(vtkShaderProgram*)>& setUniforms, QuadMask mask)
 {
   vtkOpenGLState* state = this->Context->GetState();
   vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
-  state->vtkglDisable(GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglDepthFunc depthFunc(state);
+  vtkOpenGLState::ScopedglDepthMask depthMask(state);
+  switch (mask)
+  {
+    case QuadMask::None:
+      state->vtkglDisable(GL_DEPTH_TEST);
+      break;
+    case QuadMask::Write: // the shader writes gl_FragDepth: 0 selected, 1 not
+      state->vtkglEnable(GL_DEPTH_TEST);
+      state->vtkglDepthFunc(GL_ALWAYS);
+      state->vtkglDepthMask(GL_TRUE);
+      break;
+    case QuadMask::Test: // the quad lies at depth 0.5: only selected pixels pass
+      state->vtkglEnable(GL_DEPTH_TEST);
+      state->vtkglDepthFunc(GL_GREATER);
+      state->vtkglDepthMask(GL_FALSE);
+      break;
+  }
   this->Context->GetShaderCache()->ReadyShaderProgram(quad->Program);
   this->CameraDepth->Activate();
   quad->Program->SetUniformi("vtkScreenDepth", this->CameraDepth->GetTextureUnit());

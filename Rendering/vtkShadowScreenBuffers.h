@@ -53,12 +53,24 @@ public:
     vtkOpenGLRenderWindow* context, const std::string& fragmentSource) const;
 
   /**
+   * How a quad uses the target's depth buffer as a pixel mask, so that later
+   * passes shade only the pixels an earlier one selected (the rasterizer
+   * skips the others before shading).
+   */
+  enum class QuadMask
+  {
+    None,  ///< no depth test
+    Write, ///< the shader sets gl_FragDepth: 0 selects a pixel, 1 does not
+    Test   ///< only pixels selected by an earlier Write pass are drawn
+  };
+
+  /**
    * Draw a CreateQuad() pass over the current target: binds the camera depth,
    * uploads the reconstruction matrix, then lets `setUniforms` add the pass's
-   * own. Depth test is off while it draws.
+   * own.
    */
-  void DrawQuad(
-    vtkOpenGLQuadHelper* quad, const std::function<void(vtkShaderProgram*)>& setUniforms);
+  void DrawQuad(vtkOpenGLQuadHelper* quad,
+    const std::function<void(vtkShaderProgram*)>& setUniforms, QuadMask mask = QuadMask::None);
 
   /**
    * Draw into light `slot`'s visibility texture (allocated on demand,

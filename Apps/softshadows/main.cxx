@@ -8,6 +8,8 @@
 #include "SceneFile.h"
 #include "Techniques.h"
 
+#include "vtkContactHardeningShadowPass.h"
+
 #include "vtkSoftShadowPass.h"
 
 #include <vtkImageData.h>
@@ -31,7 +33,7 @@ const char* const Usage =
   R"(Usage:
   softshadows techniques [--specs]
   softshadows render SCENE.json [--technique SPEC] [--size WxH] [--output FILE]
-                     [--shadow-only] [--light I]
+                     [--shadow-only] [--light I] [--debug-view]
   softshadows bench SCENE.json --techniques SPEC,SPEC,... [--size WxH] [--frames N] [--json]
   softshadows gallery SCENE.json --techniques SPEC,SPEC,... --output-dir DIR
                      [--size WxH] [--frames N]
@@ -42,7 +44,8 @@ their parameters. Rendering needs an X display: run under `xvfb-run -a`.
   techniques   list techniques, variants and parameters; --specs prints only
                every SPEC, one a line
   render       draw the scene to FILE (default <scene name>-<technique>.png);
-               --shadow-only writes light I's visibility as grey + alpha
+               --shadow-only writes light I's visibility as grey + alpha;
+               --debug-view marks umbra and penumbra (technique contact)
   bench        time the techniques in one window, frames interleaved, the first
                light moving; `hard` is added if missing; --json prints one JSON
                object per technique and line
@@ -171,7 +174,7 @@ int ListTechniques(const std::vector<std::string>& arguments)
 int Render(const std::vector<std::string>& arguments)
 {
   CommandLine line("render", arguments, true, { "--technique", "--size", "--output", "--light" },
-    { "--shadow-only" });
+    { "--shadow-only", "--debug-view" });
   // Options first: their mistakes are found without reading the scene.
   const bool shadowOnly = line.Has("--shadow-only");
   if (line.Has("--light") && !shadowOnly)
@@ -189,6 +192,17 @@ int Render(const std::vector<std::string>& arguments)
   Session session(line, specs);
   const Scene& scene = session.Description;
   TechniqueInstance& technique = session.Techniques.front();
+  if (line.Has("--debug-view"))
+  {
+    // The paper's figure 4 view; only the contact technique has one.
+    auto* contact = vtkContactHardeningShadowPass::SafeDownCast(technique.Shadows);
+    if (!contact)
+    {
+      throw InputError("--debug-view",
+        "technique '" + technique.Spec + "' has no debug view (only contact has one)");
+    }
+    contact->DebugViewOn();
+  }
   if (shadowOnly)
   {
     if (!technique.Shadows)

@@ -1,7 +1,7 @@
 // Shared by the contact-hardening passes (after vtkShadowScreenCommonFS).
 // A contact map texel holds r = S (1 shadowed, 0 lit), g = D (the kernel
-// control; <= 0: not blurred, -1: settled in both ping-pong buffers) and
-// b = the surface's distance to the camera (0 on background).
+// control; <= 0: not blurred) and b = the surface's distance to the camera
+// (0 on background).
 uniform sampler2D contactMap;
 uniform float contactDepthTolerance;
 uniform bool contactDebugView;

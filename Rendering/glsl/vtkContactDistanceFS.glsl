@@ -33,21 +33,23 @@ float vtkContactLightDistance(float depth)
   return mapEye.w > 0.0 ? n * f / (f - depth * (f - n)) : n + depth * (f - n);
 }
 
-// Blur passes whose summed variance reaches a Gaussian of full width `width`
-// (about 4 sigma, 2% to 98%).
+// The number of blur passes whose summed variance comes closest to that of a
+// Gaussian of full width `width` (about 4 sigma, 2% to 98%): none for edges
+// under about a pixel and a half, which stay hard.
 float vtkContactPassesFor(float width)
 {
   float target = 0.0625 * width * width;
   float variance = 0.0;
   for (int k = 0; k < passLimit; ++k)
   {
-    if (variance >= target)
+    float size = growingKernel ? float(min(minimumKernel + 2 * k, maximumKernel))
+                               : float(maximumKernel);
+    float next = variance + kernelVariance * size * size;
+    if (abs(next - target) >= abs(variance - target))
     {
       return float(k);
     }
-    float size = growingKernel ? float(min(minimumKernel + 2 * k, maximumKernel))
-                               : float(maximumKernel);
-    variance += kernelVariance * size * size;
+    variance = next;
   }
   return float(passLimit);
 }
@@ -57,7 +59,7 @@ void main()
   float depth;
   if (!vtkScreenHasSurface(depth))
   {
-    gl_FragData[0] = vec4(0.0, -1.0, 0.0, 0.0);
+    gl_FragData[0] = vec4(0.0);
     return;
   }
   vec3 position = vtkScreenPositionWC(texCoord, depth);

@@ -1,8 +1,8 @@
 // Pass 4, multi-pass variant: one Poisson-disk Gaussian blur of S over a
 // kernel of `kernelSize` pixels (sigma = size / 3, weights normalised), for
-// pixels whose D is still positive; D drops by one. Pixels that just reached
-// D = 0 are copied once more so both ping-pong buffers agree, then marked -1
-// and skipped.
+// pixels whose D is still positive; D drops by one. Only pixels the prepare
+// pass selected are drawn (depth mask); those whose D ran out are copied, so
+// both ping-pong buffers always agree.
 uniform vec3 taps[64];
 uniform int tapCount;
 uniform float kernelSize;
@@ -11,13 +11,9 @@ void main()
 {
   ivec2 pixel = vtkScreenPixel();
   vec4 c = vtkContactFetch(pixel);
-  if (c.g < 0.0)
+  if (c.g <= 0.0)
   {
-    discard;
-  }
-  if (c.g == 0.0)
-  {
-    gl_FragData[0] = vec4(c.r, -1.0, c.b, 0.0);
+    gl_FragData[0] = c;
     return;
   }
   float sum = 0.0;

@@ -1,7 +1,7 @@
 // Between passes 2 and 4: the umbra early-out (section 5: D = 0 where the
 // whole neighbourhood is shadowed) and the optional dilation of D (pass 3).
-// Writes the same texel to both ping-pong buffers, with D = -1 wherever no
-// blur will touch it.
+// Writes the same texel to both ping-pong buffers, and depth 0 where blurs
+// will work (D > 0), 1 elsewhere, so that blur passes skip the rest.
 uniform bool earlyOut;
 uniform int earlyOutRadius;
 uniform bool dilation;
@@ -9,18 +9,15 @@ uniform float dilationSize;
 uniform vec3 taps[64]; // Poisson offsets in [-1,1]^2 and Gaussian weights
 uniform int tapCount;
 
-// Every texel on a 9 x 9 grid spanning the early-out kernel is shadowed.
+// Every Poisson tap over the early-out kernel is shadowed: a sampled test of
+// the section 5 neighbourhood, at the cost of one blur.
 bool vtkContactDeepUmbra(ivec2 pixel)
 {
-  int stride = max(1, earlyOutRadius / 4);
-  for (int y = -earlyOutRadius; y <= earlyOutRadius; y += stride)
+  for (int i = 1; i < tapCount; ++i)
   {
-    for (int x = -earlyOutRadius; x <= earlyOutRadius; x += stride)
+    if (vtkContactFetch(pixel + ivec2(round(taps[i].xy * float(earlyOutRadius)))).r < 1.0)
     {
-      if (vtkContactFetch(pixel + ivec2(x, y)).r < 1.0)
-      {
-        return false;
-      }
+      return false;
     }
   }
   return true;
@@ -51,7 +48,8 @@ void main()
     }
     d = weights > 0.0 ? sum / weights : 0.0;
   }
-  vec4 result = vec4(c.r, d > 0.0 ? d : -1.0, c.b, 0.0);
+  vec4 result = vec4(c.r, d, c.b, 0.0);
   gl_FragData[0] = result;
   gl_FragData[1] = result;
+  gl_FragDepth = d > 0.0 ? 0.0 : 1.0;
 }

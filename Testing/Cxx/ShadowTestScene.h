@@ -7,6 +7,7 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCubeSource.h"
+#include "vtkFenceSource.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
 #include "vtkPlaneSource.h"
@@ -73,6 +74,43 @@ inline vtkLight* Build(vtkRenderer* renderer, double lightRadius, double ballHei
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetPosition(0, 5.5, 7.5);
   camera->SetFocalPoint(0, 0.3, 0);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetViewAngle(35);
+  renderer->ResetCameraClippingRange();
+  renderer->SetBackground(0.1, 0.1, 0.12);
+  return light;
+}
+
+/// A fence on the ground, lit from behind and above so that its shadow falls
+/// towards the camera: contact-hardening shows at the fence's foot.
+inline vtkLight* BuildFence(vtkRenderer* renderer, double lightRadius)
+{
+  const double ground[3] = { 0.85, 0.85, 0.85 };
+  const double wood[3] = { 0.72, 0.56, 0.38 };
+
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-3, 0, -3);
+  plane->SetPoint1(3, 0, -3);
+  plane->SetPoint2(-3, 0, 3);
+  AddActor(renderer, plane, ground);
+
+  vtkNew<vtkFenceSource> fence;
+  fence->SetNumberOfPickets(9);
+  fence->SetHeight(1.2);
+  AddActor(renderer, fence, wood)->SetPosition(0, 0, -1.0);
+
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPositional(true);
+  light->SetPosition(0.5, 4.0, -4.0);
+  light->SetFocalPoint(0, 0, 0.5);
+  light->SetConeAngle(40);
+  vtkSoftShadowPass::SetRadius(lightRadius, light);
+  renderer->AddLight(light);
+
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(0, 4.5, 5.0);
+  camera->SetFocalPoint(0, 0.3, 0.2);
   camera->SetViewUp(0, 1, 0);
   camera->SetViewAngle(35);
   renderer->ResetCameraClippingRange();

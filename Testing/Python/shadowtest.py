@@ -174,3 +174,80 @@ def check(condition, message):
         print("FAIL: " + message)
         sys.exit(1)
     print("ok: " + message)
+
+
+def surface_ids(scene):
+    """Per pixel: 0 background, 1 ground, 2 ball (the ball scene)."""
+    camera = scene["camera"]
+    eye = np.array(camera["position"], float)
+    rays = camera_rays(camera, scene["size"])
+    points, ground, _ = ground_points(scene)
+    ball = np.array(scene["actors"][1]["position"], float)
+    ids = np.where(ground, 1, 0)
+    ids[np.isfinite(sphere_hit(eye, rays, ball, BALL_RADIUS))] = 2
+    return ids
+
+
+def quality_mask(scene):
+    """SPEC's pixels for measuring quality: geometry lit from the front
+    (N.L >= 0.1), inside 0.9 of the spot cone, away from silhouettes."""
+    camera = scene["camera"]
+    eye = np.array(camera["position"], float)
+    rays = camera_rays(camera, scene["size"])
+    ids = surface_ids(scene)
+    ball = np.array(scene["actors"][1]["position"], float)
+    t_ball = sphere_hit(eye, rays, ball, BALL_RADIUS)
+    points, _, _ = ground_points(scene)
+    ball_points = eye + np.where(np.isfinite(t_ball), t_ball, 0.0)[:, :, None] * rays
+    position = np.where((ids == 2)[:, :, None], ball_points, points)
+    normal = np.where((ids == 2)[:, :, None], (ball_points - ball) / BALL_RADIUS,
+                      np.array([0.0, 1.0, 0.0]))
+    to_light = LIGHT - position
+    to_light /= np.linalg.norm(to_light, axis=2, keepdims=True)
+    n_dot_l = np.sum(normal * to_light, axis=2)
+    axis = np.array([0.0, -1.0, 0.0])
+    cone = scene["lights"][0]["cone_angle"]
+    inside = np.sum(-to_light * axis, axis=2) >= math.cos(math.radians(0.9 * cone))
+    same = np.ones_like(ids, dtype=bool)
+    for dy, dx in ((0, 1), (0, -1), (1, 0), (-1, 0)):
+        same &= np.roll(np.roll(ids, dy, axis=0), dx, axis=1) == ids
+    return (ids > 0) & (n_dot_l >= 0.1) & inside & same
+
+
+def rmse(a, b, mask):
+    return float(np.sqrt(np.mean((a[mask] - b[mask]) ** 2)))
+
+
+def post_scene(light_radius=0.4, technique="contact", size=(240, 180)):
+    """A square post standing on the ground, lit from +x: its shadow runs
+    along -x from the post's base, which it touches."""
+    return {
+        "name": "post",
+        "size": list(size),
+        "camera": CAMERA,
+        "lights": [{"type": "spot", "position": [3.0, 5.0, 0.0], "focal_point": [0, 0, 0],
+                    "cone_angle": 45, "radius": light_radius}],
+        "actors": [
+            {"source": "plane",
+             "params": {"size": [2 * GROUND_HALF, 2 * GROUND_HALF], "resolution": 8}},
+            {"source": "cube", "params": {"size": [0.3, 1.5, 0.3]},
+             "position": [0.0, 0.75, 0.0]},
+        ],
+        "shadows": {"technique": technique, "map_size": 1024},
+    }
+
+
+def edge_width_pixels(scene, visibility, x0, low=0.02, high=0.98):
+    """Width in pixels of the penumbra across the shadow's +z edge at x = x0:
+    the z-extent of ground samples near x0 with visibility strictly between
+    `low` and `high`, over the pixel size there. The post hides nothing at
+    z > 0.15 from the camera."""
+    points, visible, pixel = ground_points(scene)
+    near = visible & (np.abs(points[:, :, 0] - x0) < pixel) & (points[:, :, 2] > 0.16) \
+        & (points[:, :, 2] < 1.5)
+    z = points[:, :, 2][near]
+    v = visibility[near]
+    band = (v > low) & (v < high)
+    if not band.any():
+        return 0.0
+    return float((z[band].max() - z[band].min()) / np.median(pixel[near]))

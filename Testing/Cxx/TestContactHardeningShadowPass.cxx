@@ -1,0 +1,51 @@
+// Regression images of the `contact` technique: run as
+//   TestContactHardeningShadowPass <ball|fence> <pcf|gaussian|multipass> -V baseline ...
+// Kernels come from the light's radius (the default), so no tuning per scene.
+#include "vtkContactHardeningShadowPass.h"
+#include "vtkNew.h"
+#include "vtkRegressionTestImage.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+
+#include "ShadowTestScene.h"
+
+#include <cstring>
+#include <iostream>
+
+int TestContactHardeningShadowPass(int argc, char* argv[])
+{
+  if (argc < 3)
+  {
+    std::cerr << "usage: TestContactHardeningShadowPass <ball|fence> <variant> ...\n";
+    return EXIT_FAILURE;
+  }
+  vtkNew<vtkRenderer> renderer;
+  if (std::strcmp(argv[1], "fence") == 0)
+  {
+    ShadowTestScene::BuildFence(renderer, 0.3);
+  }
+  else
+  {
+    ShadowTestScene::Build(renderer, 0.4, 1.4);
+  }
+
+  vtkNew<vtkContactHardeningShadowPass> pass;
+  pass->SetMapSize(1024);
+  if (std::strcmp(argv[2], "pcf") == 0)
+  {
+    pass->SetVariantToPCF();
+  }
+  else if (std::strcmp(argv[2], "gaussian") == 0)
+  {
+    pass->SetVariantToGaussian();
+  }
+  renderer->SetPass(pass);
+
+  vtkNew<vtkRenderWindow> window;
+  window->SetSize(320, 240);
+  window->AddRenderer(renderer);
+  window->Render();
+
+  int result = vtkRegressionTestImage(window);
+  return result == vtkRegressionTester::FAILED ? EXIT_FAILURE : EXIT_SUCCESS;
+}

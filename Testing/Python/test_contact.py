@@ -1,0 +1,42 @@
+"""The `contact` technique (Cherry & Kooima): contact-hardening penumbrae that
+widen with the occluder's height, and, with kernels sized from the light's
+radius, closer to the `reference` ground truth than hard shadows."""
+import numpy as np
+
+import shadowtest as st
+
+radius = 0.4
+
+# Penumbra width against height: monotonic, and near similar triangles.
+widths = []
+for height in (0.75, 1.5, 2.25):
+    scene = st.ball_scene(height=height, light_radius=radius, technique="contact")
+    visibility, _ = st.shadow_only(scene)
+    widths.append(st.penumbra_width(scene, visibility))
+    print("height %.2f: penumbra %.3f" % (height, widths[-1]))
+st.check(widths[0] < widths[1] < widths[2], "contact penumbra widens as the ball rises: %s"
+         % np.round(widths, 3).tolist())
+
+# Where the occluder touches the receiver the edge stays hard: a post on the
+# ground, its shadow's side edge just beside its base, and farther out.
+scene = st.post_scene(light_radius=radius)
+visibility, _ = st.shadow_only(scene)
+at_base = st.edge_width_pixels(scene, visibility, -0.2)
+far_out = st.edge_width_pixels(scene, visibility, -1.4)
+st.check(at_base <= 2.0, "at contact the edge is hard: %.1f px wide" % at_base)
+st.check(far_out > at_base + 2.0, "away from contact it softens: %.1f px" % far_out)
+
+# Quality against the reference: RMSE of visibility over SPEC's pixels.
+scene = st.ball_scene(height=1.5, light_radius=radius, size=(240, 180),
+                      technique="reference", params={"samples": 256})
+reference, _ = st.shadow_only(scene)
+mask = st.quality_mask(scene)
+errors = {}
+for technique in ("hard", "contact:pcf", "contact:gaussian", "contact:multipass"):
+    visibility, _ = st.shadow_only(scene, technique)
+    errors[technique] = st.rmse(visibility, reference, mask)
+    print("RMSE %-18s %.4f" % (technique, errors[technique]))
+for technique in ("contact:pcf", "contact:gaussian", "contact:multipass"):
+    st.check(errors[technique] < errors["hard"],
+             "%s beats hard against the reference (%.4f < %.4f)"
+             % (technique, errors[technique], errors["hard"]))
