@@ -76,7 +76,7 @@ vtkSmartPointer<vtkTextureObject> FloatTexture(vtkOpenGLRenderWindow* context, i
   texture->SetMagnificationFilter(vtkTextureObject::Nearest);
   texture->SetWrapS(vtkTextureObject::ClampToEdge);
   texture->SetWrapT(vtkTextureObject::ClampToEdge);
-  texture->SetInternalFormat(GL_RGBA32F);
+  texture->SetInternalFormat(GL_RGBA16F);
   texture->SetFormat(GL_RGBA);
   texture->SetDataType(GL_FLOAT);
   texture->Allocate2D(w, h, 4, VTK_FLOAT);

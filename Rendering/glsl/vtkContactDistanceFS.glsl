@@ -63,7 +63,9 @@ void main()
     return;
   }
   vec3 position = vtkScreenPositionWC(texCoord, depth);
-  vec3 normal = vtkScreenNormalWC(depth, position);
+  // The face normal from derivatives: cheaper than vtkScreenNormalWC's four
+  // neighbours, wrong only on silhouette pixels, where blurs stop anyway.
+  vec3 normal = normalize(cross(dFdx(position), dFdy(position)));
   float cameraDistance = distance(position, cameraPosition);
   vec4 receiver = vtkShadowNormalOffset(
     vec4(position, 1.0), normal, mapEye, mapAxis, mapFootprint, normalBias);
