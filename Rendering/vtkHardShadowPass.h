@@ -5,7 +5,9 @@
  *
  * The baseline every soft technique is compared with (technique `hard`). It
  * adds nothing to the framework but its PCF kernel: the framework's depth
- * maps and hard lookup are the technique.
+ * maps and hard lookup are the technique. Point lights get cube maps of
+ * squared distances (Gerasimov, GPU Gems ch. 12), one tap or, with a PCF
+ * radius, the chapter's 4-tap PCF with taps `PCFRadius` texels apart.
  *
  * @sa vtkSoftShadowPass
  */
@@ -51,6 +53,7 @@ protected:
 
   bool RenderShadowMaps(const vtkRenderState* s) override;
   int GetPCFRadius() const override { return this->PCFRadius; }
+  bool SupportsPointLights() const override { return true; }
 
   int PCFRadius = 0;
   bool HardwareFiltering = true;

@@ -64,7 +64,7 @@ vtkShadowMapManager::vtkShadowMapManager()
 vtkShadowMapManager::~vtkShadowMapManager() = default;
 
 //------------------------------------------------------------------------------
-int vtkShadowMapManager::Update(vtkRenderer* renderer, std::vector<vtkLight*>* unsupported)
+int vtkShadowMapManager::Update(vtkRenderer* renderer)
 {
   this->Renderer = renderer;
   std::vector<Light> previous;
@@ -103,15 +103,6 @@ int vtkShadowMapManager::Update(vtkRenderer* renderer, std::vector<vtkLight*>* u
     {
       continue; // lights the view direction: casts no visible shadow
     }
-    if (source->GetPositional() && source->GetConeAngle() >= 90.0)
-    {
-      if (unsupported)
-      {
-        unsupported->push_back(source);
-      }
-      continue;
-    }
-
     Light light;
     light.Source = source;
     light.SceneIndex = sceneIndex;
@@ -123,23 +114,79 @@ int vtkShadowMapManager::Update(vtkRenderer* renderer, std::vector<vtkLight*>* u
     const double* p = source->GetTransformedPosition();
     const double* f = source->GetTransformedFocalPoint();
     light.Position = glm::dvec3(p[0], p[1], p[2]);
-    glm::dvec3 axis = glm::dvec3(f[0], f[1], f[2]) - light.Position;
+    light.Point = source->GetPositional() && source->GetConeAngle() >= 90.0;
+    glm::dvec3 axis = light.Point ? this->SceneCenter() - light.Position
+                                  : glm::dvec3(f[0], f[1], f[2]) - light.Position;
+    if (light.Point && !(glm::length(axis) > 0.0))
+    {
+      axis = glm::dvec3(0.0, -1.0, 0.0); // any: it only orients the sampling disc
+    }
     if (!(glm::length(axis) > 0.0))
     {
       continue; // no direction: position == focal point, or NaN
     }
     light.Direction = glm::normalize(axis);
-    light.Map = this->FitFrustum(light, light.Position, light.Direction);
+    if (light.Point)
+    {
+      light.Faces = this->CubeFaces(light.Position);
+    }
+    else
+    {
+      light.Map = this->FitFrustum(light, light.Position, light.Direction);
+    }
 
-    // Keep last frame's texture for the same slot.
+    // Keep last frame's textures for the same slot.
     const size_t slot = this->Lights.size();
     if (slot < previous.size())
     {
       light.DepthMap = previous[slot].DepthMap;
+      light.CubeMap = previous[slot].CubeMap;
     }
     this->Lights.push_back(light);
   }
+  int maps = 0, cubes = 0;
+  for (auto& light : this->Lights)
+  {
+    light.MapIndex = light.Point ? cubes++ : maps++;
+  }
   return static_cast<int>(this->Lights.size());
+}
+
+//------------------------------------------------------------------------------
+glm::dvec3 vtkShadowMapManager::SceneCenter() const
+{
+  const double* b = this->SceneBounds;
+  return glm::dvec3(0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]));
+}
+
+//------------------------------------------------------------------------------
+std::array<vtkShadowMapManager::Frustum, 6> vtkShadowMapManager::CubeFaces(
+  const glm::dvec3& eye) const
+{
+  // OpenGL's cube map faces: looking along +x -x +y -y +z -z, with the up
+  // vectors that make a lookup by direction land on the texel drawn there.
+  static const double axes[6][6] = { { 1, 0, 0, 0, -1, 0 }, { -1, 0, 0, 0, -1, 0 },
+    { 0, 1, 0, 0, 0, 1 }, { 0, -1, 0, 0, 0, -1 }, { 0, 0, 1, 0, -1, 0 }, { 0, 0, -1, 0, -1, 0 } };
+  double farthest = 0.0;
+  for (const auto& c : BoxCorners(this->SceneBounds))
+  {
+    farthest = std::max(farthest, glm::length(c - eye));
+  }
+  std::array<Frustum, 6> faces;
+  for (int f = 0; f < 6; ++f)
+  {
+    Frustum& face = faces[f];
+    face.Eye = eye;
+    face.Direction = glm::dvec3(axes[f][0], axes[f][1], axes[f][2]);
+    face.Up = glm::dvec3(axes[f][3], axes[f][4], axes[f][5]);
+    face.Far = std::max(farthest * 1.001, 1e-6);
+    face.Near = face.Far * 1e-4;
+    face.View = glm::lookAt(eye, eye + face.Direction, face.Up);
+    face.Projection = glm::perspective(glm::radians(90.0), 1.0, face.Near, face.Far);
+    face.WorldToMap = ClipToMap * face.Projection * face.View;
+    face.Footprint = glm::dvec2(0.0, 2.0);
+  }
+  return faces;
 }
 
 //------------------------------------------------------------------------------
@@ -225,8 +272,7 @@ void vtkShadowMapManager::AllocateDepthMap(
 }
 
 //------------------------------------------------------------------------------
-bool vtkShadowMapManager::RenderDepth(const vtkRenderState* s, vtkSoftShadowPass* pass,
-  const Frustum& frustum, vtkTextureObject* target)
+void vtkShadowMapManager::SetCamera(const Frustum& frustum)
 {
   if (!this->LightCamera)
   {
@@ -251,10 +297,16 @@ bool vtkShadowMapManager::RenderDepth(const vtkRenderState* s, vtkSoftShadowPass
   }
   camera->SetExplicitProjectionTransformMatrix(projection);
   camera->SetUseExplicitProjectionTransformMatrix(true);
+}
 
+//------------------------------------------------------------------------------
+bool vtkShadowMapManager::RenderDepth(const vtkRenderState* s, vtkSoftShadowPass* pass,
+  const Frustum& frustum, vtkTextureObject* target)
+{
+  this->SetCamera(frustum);
   vtkRenderer* renderer = s->GetRenderer();
   vtkSmartPointer<vtkCamera> viewCamera = renderer->GetActiveCamera();
-  renderer->SetActiveCamera(camera);
+  renderer->SetActiveCamera(this->LightCamera);
   const bool ok = this->DrawDepth(s, pass, target, true, true);
   renderer->SetActiveCamera(viewCamera);
   return ok;
@@ -268,15 +320,105 @@ bool vtkShadowMapManager::RenderCameraDepth(
 }
 
 //------------------------------------------------------------------------------
-bool vtkShadowMapManager::DrawDepth(const vtkRenderState* s, vtkSoftShadowPass* pass,
-  vtkTextureObject* target, bool allProps, bool bias)
+void vtkShadowMapManager::AllocateCubeMap(vtkOpenGLRenderWindow* context, Light& light, int size)
+{
+  vtkTextureObject* cube = light.CubeMap;
+  if (cube && cube->GetContext() == context && static_cast<int>(cube->GetWidth()) == size)
+  {
+    return;
+  }
+  light.CubeMap = vtkSmartPointer<vtkTextureObject>::New();
+  cube = light.CubeMap;
+  cube->SetContext(context);
+  cube->SetMinificationFilter(vtkTextureObject::Nearest);
+  cube->SetMagnificationFilter(vtkTextureObject::Nearest);
+  cube->SetWrapS(vtkTextureObject::ClampToEdge);
+  cube->SetWrapT(vtkTextureObject::ClampToEdge);
+  cube->SetWrapR(vtkTextureObject::ClampToEdge);
+  cube->CreateCubeFromRaw(size, size, 1, VTK_FLOAT, nullptr);
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowMapManager::RenderDistanceCube(const vtkRenderState* s, vtkSoftShadowPass* pass,
+  const std::array<Frustum, 6>& faces, vtkTextureObject* cube)
 {
   vtkRenderer* renderer = s->GetRenderer();
   auto* context = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  const int size = static_cast<int>(cube->GetWidth());
+  if (!this->CubeDepth || this->CubeDepth->GetContext() != context)
+  {
+    this->CubeDepth = vtkSmartPointer<vtkTextureObject>::New();
+    this->CubeDepth->SetContext(context);
+    this->CubeDepth->AllocateDepth(size, size, vtkTextureObject::Float32);
+  }
+  this->CubeDepth->Resize(size, size);
+  if (!this->DepthFramebuffer)
+  {
+    this->DepthFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    this->DepthFramebuffer->SetContext(context);
+  }
+
+  vtkSmartPointer<vtkCamera> viewCamera = renderer->GetActiveCamera();
+  vtkOpenGLState* state = context->GetState();
+  state->PushFramebufferBindings();
+  bool ok = true;
+  for (int f = 0; f < 6 && ok; ++f)
+  {
+    this->SetCamera(faces[f]);
+    renderer->SetActiveCamera(this->LightCamera);
+    const glm::mat4 clipToView(glm::inverse(faces[f].Projection));
+    std::copy(glm::value_ptr(clipToView), glm::value_ptr(clipToView) + 16, pass->FaceClipToView);
+    pass->FaceSize = static_cast<float>(size);
+
+    this->DepthFramebuffer->Bind();
+    this->DepthFramebuffer->AddColorAttachment(0, cube, 0, GL_TEXTURE_CUBE_MAP_POSITIVE_X + f);
+    this->DepthFramebuffer->AddDepthAttachment(this->CubeDepth);
+    this->DepthFramebuffer->ActivateDrawBuffers(1);
+    // Nothing drawn is infinitely far: lit.
+    vtkOpenGLState::ScopedglClearColor clearColor(state);
+    state->vtkglClearColor(VTK_FLOAT_MAX, VTK_FLOAT_MAX, VTK_FLOAT_MAX, VTK_FLOAT_MAX);
+    ok = this->DrawProps(s, pass, size, size, true, false, true);
+    this->DepthFramebuffer->RemoveColorAttachment(0);
+    this->DepthFramebuffer->RemoveDepthAttachment();
+    renderer->SetActiveCamera(viewCamera);
+  }
+  state->PopFramebufferBindings();
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowMapManager::DrawDepth(const vtkRenderState* s, vtkSoftShadowPass* pass,
+  vtkTextureObject* target, bool allProps, bool bias)
+{
+  auto* context = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
   if (!context || !target)
   {
     return false;
   }
+  if (!this->DepthFramebuffer)
+  {
+    this->DepthFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    this->DepthFramebuffer->SetContext(context);
+  }
+  context->GetState()->PushFramebufferBindings();
+  this->DepthFramebuffer->Bind();
+  this->DepthFramebuffer->AddDepthAttachment(target);
+  this->DepthFramebuffer->DeactivateDrawBuffers();
+  const bool ok = this->DrawProps(s, pass, static_cast<int>(target->GetWidth()),
+    static_cast<int>(target->GetHeight()), allProps, bias, false);
+  this->DepthFramebuffer->RemoveDepthAttachment();
+  context->GetState()->PopFramebufferBindings();
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+// Draws the props into the bound framebuffer: depth only, or (`colour`) the
+// squared distance each fragment lies from the camera.
+bool vtkShadowMapManager::DrawProps(const vtkRenderState* s, vtkSoftShadowPass* pass, int width,
+  int height, bool allProps, bool bias, bool colour)
+{
+  vtkRenderer* renderer = s->GetRenderer();
+  auto* context = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   vtkOpenGLState* state = context->GetState();
 
   // Shadow casters include props outside the view: they may shadow what is in it.
@@ -299,33 +441,23 @@ bool vtkShadowMapManager::DrawDepth(const vtkRenderState* s, vtkSoftShadowPass* 
     props.assign(s->GetPropArray(), s->GetPropArray() + s->GetPropArrayCount());
   }
 
-  if (!this->DepthFramebuffer)
-  {
-    this->DepthFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-    this->DepthFramebuffer->SetContext(context);
-  }
-  const int width = static_cast<int>(target->GetWidth());
-  const int height = static_cast<int>(target->GetHeight());
-
   vtkOpenGLState::ScopedglViewport viewportSaver(state);
   vtkOpenGLState::ScopedglScissor scissorSaver(state);
   vtkOpenGLState::ScopedglEnableDisable scissorTest(state, GL_SCISSOR_TEST);
   vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable blending(state, GL_BLEND);
   vtkOpenGLState::ScopedglDepthMask depthMask(state);
   vtkOpenGLState::ScopedglColorMask colorMask(state);
 
-  state->PushFramebufferBindings();
-  this->DepthFramebuffer->Bind();
-  this->DepthFramebuffer->AddDepthAttachment(target);
-  this->DepthFramebuffer->DeactivateDrawBuffers();
   state->vtkglViewport(0, 0, width, height);
   state->vtkglScissor(0, 0, width, height);
   state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_BLEND);
   state->vtkglEnable(GL_DEPTH_TEST);
   state->vtkglDepthMask(GL_TRUE);
-  state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  state->vtkglColorMask(colour, colour, colour, colour);
   state->vtkglClearDepth(1.0);
-  state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+  state->vtkglClear(GL_DEPTH_BUFFER_BIT | (colour ? GL_COLOR_BUFFER_BIT : 0));
   if (bias)
   {
     // Slope-scaled bias: acne-free lit surfaces. PCF taps reach (r + 1)
@@ -341,7 +473,8 @@ bool vtkShadowMapManager::DrawDepth(const vtkRenderState* s, vtkSoftShadowPass* 
   vtkRenderState depthState(renderer);
   depthState.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
   depthState.SetFrameBuffer(this->DepthFramebuffer);
-  pass->SetStage(vtkSoftShadowPass::Stage::LightDepth);
+  pass->SetStage(
+    colour ? vtkSoftShadowPass::Stage::LightDistance : vtkSoftShadowPass::Stage::LightDepth);
   pass->PreRender(&depthState);
   for (vtkProp* prop : props)
   {
@@ -354,9 +487,6 @@ bool vtkShadowMapManager::DrawDepth(const vtkRenderState* s, vtkSoftShadowPass* 
     glPolygonOffset(0.0f, 0.0f);
     glDisable(GL_POLYGON_OFFSET_FILL);
   }
-
-  this->DepthFramebuffer->RemoveDepthAttachment();
-  state->PopFramebufferBindings();
   return true;
 }
 
@@ -381,12 +511,20 @@ void vtkShadowMapManager::ReleaseGraphicsResources(vtkWindow* w)
 {
   for (auto& light : this->Lights)
   {
-    if (light.DepthMap)
+    for (vtkTextureObject* map : { light.DepthMap.Get(), light.CubeMap.Get() })
     {
-      light.DepthMap->ReleaseGraphicsResources(w);
+      if (map)
+      {
+        map->ReleaseGraphicsResources(w);
+      }
     }
   }
   this->Lights.clear();
+  if (this->CubeDepth)
+  {
+    this->CubeDepth->ReleaseGraphicsResources(w);
+    this->CubeDepth = nullptr;
+  }
   if (this->DepthFramebuffer)
   {
     this->DepthFramebuffer->ReleaseGraphicsResources(w);

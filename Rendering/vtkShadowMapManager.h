@@ -16,6 +16,7 @@
 #include <glm/mat4x4.hpp> // for glm::dmat4
 #include <glm/vec3.hpp>   // for glm::dvec3
 
+#include <array>  // for std::array
 #include <string> // for std::string
 #include <vector> // for std::vector
 
@@ -56,13 +57,17 @@ public:
     int SceneIndex = -1;        ///< index in the renderer's light collection
     int ShaderIndex = -1;       ///< N in the mappers' lightColorN uniforms
     bool Directional = false;
+    bool Point = false;         ///< positional with a cone of 90 degrees or more: a cube map
+    int MapIndex = -1;          ///< index among the lights with the same kind of map
     double Radius = 0.0;        ///< world units, or degrees for directional lights
     double ConeAngle = 0.0;     ///< half-angle in degrees (spot lights)
     double Attenuation = 1.0;   ///< vtkLight::GetShadowAttenuation()
     glm::dvec3 Position{ 0.0 }; ///< world; for directional lights a point on the axis
-    glm::dvec3 Direction{ 0.0, 0.0, -1.0 };
-    Frustum Map; ///< the light's own (centre) frustum
-    vtkSmartPointer<vtkTextureObject> DepthMap;
+    glm::dvec3 Direction{ 0.0, 0.0, -1.0 }; ///< point lights: towards the scene's centre
+    Frustum Map; ///< the light's own (centre) frustum; not for point lights
+    vtkSmartPointer<vtkTextureObject> DepthMap; ///< spot and directional lights
+    std::array<Frustum, 6> Faces;               ///< point lights: +x -x +y -y +z -z
+    vtkSmartPointer<vtkTextureObject> CubeMap;  ///< point lights: squared distances
   };
 
   vtkShadowMapManager();
@@ -70,10 +75,9 @@ public:
 
   /**
    * Collect the lights that cast shadows and fit their frusta to the bounds of
-   * the visible props. Returns the number of shadowed lights. Lights that
-   * cannot cast shadows yet (point lights) are returned in `unsupported`.
+   * the visible props. Returns the number of shadowed lights.
    */
-  int Update(vtkRenderer* renderer, std::vector<vtkLight*>* unsupported = nullptr);
+  int Update(vtkRenderer* renderer);
 
   std::vector<Light>& GetLights() { return this->Lights; }
   const std::vector<Light>& GetLights() const { return this->Lights; }
@@ -86,6 +90,25 @@ public:
    * for directional ones.
    */
   Frustum FitFrustum(const Light& light, const glm::dvec3& eye, const glm::dvec3& direction) const;
+
+  /**
+   * The six 90-degree frusta of a cube map around `eye`, in OpenGL's face
+   * order and orientation, depth range fitted to the scene.
+   */
+  std::array<Frustum, 6> CubeFaces(const glm::dvec3& eye) const;
+
+  /**
+   * Make sure `light.CubeMap` is a `size`^2 single-channel float cube map
+   * (nearest filtering: it holds distances, not colours).
+   */
+  void AllocateCubeMap(vtkOpenGLRenderWindow* context, Light& light, int size);
+
+  /**
+   * Draw the squared distance to `faces`' common eye of every visible opaque
+   * prop into the six faces of `cube` (Gerasimov, section 12.3.3), six passes.
+   */
+  bool RenderDistanceCube(const vtkRenderState* s, vtkSoftShadowPass* pass,
+    const std::array<Frustum, 6>& faces, vtkTextureObject* cube);
 
   /**
    * Make sure `light.DepthMap` is a `size` x `size` depth texture with
@@ -119,6 +142,10 @@ public:
   void ReleaseGraphicsResources(vtkWindow* w);
 
 private:
+  glm::dvec3 SceneCenter() const;
+  void SetCamera(const Frustum& frustum);
+  bool DrawProps(const vtkRenderState* s, vtkSoftShadowPass* pass, int width, int height,
+    bool allProps, bool bias, bool colour);
   bool DrawDepth(const vtkRenderState* s, vtkSoftShadowPass* pass, vtkTextureObject* target,
     bool allProps, bool bias);
 
@@ -127,6 +154,7 @@ private:
   double SceneBounds[6];
   vtkSmartPointer<vtkOpenGLCamera> LightCamera;
   vtkSmartPointer<vtkOpenGLFramebufferObject> DepthFramebuffer;
+  vtkSmartPointer<vtkTextureObject> CubeDepth; ///< z-buffer while drawing cube faces
 };
 
 #endif

@@ -22,6 +22,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat4x4.hpp>
 
+#include <algorithm>
 #include <sstream>
 
 vtkInformationKeyMacro(vtkSoftShadowPass, RADIUS, Double);
@@ -142,37 +143,45 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   }
 
   // 1. Decide: which lights cast shadows, and their frusta.
-  std::vector<vtkLight*> unsupported;
-  this->Maps->Update(renderer, &unsupported);
-  if (!unsupported.empty() && !this->PointLightReported)
+  this->Maps->Update(renderer);
+  auto& shadowed = this->Maps->GetLights();
+  if (!this->SupportsPointLights())
   {
-    vtkErrorMacro(<< unsupported.size()
-                  << " point light(s) (positional, cone angle >= 90): omnidirectional shadows"
-                     " are not implemented yet; these lights are drawn without shadows.");
-    this->PointLightReported = true;
+    const auto points = std::count_if(shadowed.begin(), shadowed.end(),
+      [](const vtkShadowMapManager::Light& l) { return l.Point; });
+    if (points > 0 && !this->PointLightReported)
+    {
+      vtkErrorMacro(<< points
+                    << " point light(s) (positional, cone angle >= 90): " << this->GetClassName()
+                    << " does not shadow point lights yet; they are drawn without shadows.");
+      this->PointLightReported = true;
+    }
+    shadowed.erase(std::remove_if(shadowed.begin(), shadowed.end(),
+                     [](const vtkShadowMapManager::Light& l) { return l.Point; }),
+      shadowed.end());
   }
 
   // 2-3. Draw the technique's maps and screen-space passes.
-  bool shadowed = !this->Maps->GetLights().empty();
-  if (shadowed)
+  bool drawn = !shadowed.empty();
+  if (drawn)
   {
-    shadowed = this->RenderShadowMaps(s);
+    drawn = this->RenderShadowMaps(s);
   }
-  if (shadowed && this->UsesScreenSpace())
+  if (drawn && this->UsesScreenSpace())
   {
-    shadowed = this->Screen->RenderCameraDepth(s, this) && this->RenderScreenSpace(s);
+    drawn = this->Screen->RenderCameraDepth(s, this) && this->RenderScreenSpace(s);
   }
-  if (!shadowed)
+  if (!drawn)
   {
-    this->Maps->GetLights().clear();
+    shadowed.clear();
   }
 
   // 4. Draw the scene with the shadow term in every receiver's shader.
-  for (auto& light : this->Maps->GetLights())
+  for (auto& light : shadowed)
   {
-    light.DepthMap->Activate();
+    (light.Point ? light.CubeMap : light.DepthMap)->Activate();
   }
-  if (shadowed && this->UsesScreenSpace())
+  if (drawn && this->UsesScreenSpace())
   {
     this->Screen->ActivateTextures();
   }
@@ -184,13 +193,13 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   this->PostRender(s);
   this->SetStage(Stage::Idle);
 
-  if (shadowed && this->UsesScreenSpace())
+  if (drawn && this->UsesScreenSpace())
   {
     this->Screen->DeactivateTextures();
   }
-  for (auto& light : this->Maps->GetLights())
+  for (auto& light : shadowed)
   {
-    light.DepthMap->Deactivate();
+    (light.Point ? light.CubeMap : light.DepthMap)->Deactivate();
   }
   vtkOpenGLCheckErrorMacro("failed after Render");
 }
@@ -202,6 +211,15 @@ bool vtkSoftShadowPass::RenderLightDepthMaps(const vtkRenderState* s, bool linea
   this->LinearMaps = linear;
   for (auto& light : this->Maps->GetLights())
   {
+    if (light.Point)
+    {
+      this->Maps->AllocateCubeMap(context, light, this->MapSize);
+      if (!this->Maps->RenderDistanceCube(s, this, light.Faces, light.CubeMap))
+      {
+        return false;
+      }
+      continue;
+    }
     this->Maps->AllocateDepthMap(context, light, this->MapSize, linear);
     if (!this->Maps->RenderDepth(s, this, light.Map, light.DepthMap))
     {
@@ -214,15 +232,22 @@ bool vtkSoftShadowPass::RenderLightDepthMaps(const vtkRenderState* s, bool linea
 //------------------------------------------------------------------------------
 std::string vtkSoftShadowPass::GetVisibilityExpression(int slot)
 {
+  const auto& light = this->Maps->GetLights()[slot];
   const std::string i = std::to_string(slot);
+  const std::string m = std::to_string(light.MapIndex);
+  if (light.Point)
+  {
+    return "vtkShadowCubeLookup(vtkShadowCube[" + m + "], vtkShadowCubeCenter[" + m +
+      "], vtkShadowPositionWC, vtkShadowNormalWC, vtkShadowPCFRadius)";
+  }
   const std::string receiver =
     "vtkShadowReceiver(" + i + ", vtkShadowPositionWC, vtkShadowNormalWC)";
   if (this->UsesScreenSpace())
   {
-    return "vtkShadowScreenVisibility(vtkShadowScreen[" + i + "], vtkShadowMap[" + i +
+    return "vtkShadowScreenVisibility(vtkShadowScreen[" + i + "], vtkShadowMap[" + m +
       "], vtkShadowWorldToMap[" + i + "], " + receiver + ")";
   }
-  return "vtkShadowLookup(vtkShadowMap[" + i + "], vtkShadowWorldToMap[" + i + "], " + receiver +
+  return "vtkShadowLookup(vtkShadowMap[" + m + "], vtkShadowWorldToMap[" + i + "], " + receiver +
     ", vtkShadowPCFRadius)";
 }
 
@@ -238,6 +263,22 @@ bool vtkSoftShadowPass::PreReplaceShaderValues(
       // Depth only: skip all shading. Clipping and depth code come earlier.
       vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Impl",
         "gl_FragData[0] = vec4(1.0);\n  return;\n  //VTK::Light::Impl", false);
+      break;
+    case Stage::LightDistance:
+      // Squared distance to the face's eye (the light) from the fragment's
+      // window position: independent of the mapper's lighting varyings.
+      vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Dec",
+        "uniform mat4 vtkShadowFaceClipToView;\nuniform float vtkShadowFaceSize;\n"
+        "//VTK::Light::Dec",
+        false);
+      vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Impl",
+        "vec4 vtkShadowFaceView = vtkShadowFaceClipToView *\n"
+        "    vec4(gl_FragCoord.xy / vtkShadowFaceSize * 2.0 - 1.0, gl_FragCoord.z * 2.0 - 1.0, "
+        "1.0);\n"
+        "  vtkShadowFaceView.xyz /= vtkShadowFaceView.w;\n"
+        "  gl_FragData[0] = vec4(dot(vtkShadowFaceView.xyz, vtkShadowFaceView.xyz));\n"
+        "  return;\n  //VTK::Light::Impl",
+        false);
       break;
     case Stage::Receivers:
       vtkShaderProgram::Substitute(
@@ -269,7 +310,11 @@ bool vtkSoftShadowPass::PostReplaceShaderValues(
   std::ostringstream dec, impl;
   if (active)
   {
-    dec << "#define VTK_SHADOW_LIGHTS " << lights.size() << "\n";
+    const auto cubes = std::count_if(
+      lights.begin(), lights.end(), [](const vtkShadowMapManager::Light& l) { return l.Point; });
+    dec << "#define VTK_SHADOW_LIGHTS " << lights.size() << "\n"
+        << "#define VTK_SHADOW_MAPS " << lights.size() - cubes << "\n"
+        << "#define VTK_SHADOW_CUBES " << cubes << "\n";
     if (this->UsesScreenSpace())
     {
       dec << "#define VTK_SHADOW_SCREEN_SPACE\n";
@@ -326,6 +371,12 @@ bool vtkSoftShadowPass::PostReplaceShaderValues(
 bool vtkSoftShadowPass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
 {
+  if (this->CurrentStage == Stage::LightDistance)
+  {
+    program->SetUniformMatrix4x4("vtkShadowFaceClipToView", this->FaceClipToView);
+    program->SetUniformf("vtkShadowFaceSize", this->FaceSize);
+    return true;
+  }
   if (this->CurrentStage != Stage::Receivers || !program->IsUniformUsed("vtkShadowViewToWorld"))
   {
     return true;
@@ -338,17 +389,29 @@ bool vtkSoftShadowPass::SetShaderParameters(
   program->SetUniformi("vtkShadowPCFRadius", this->GetPCFRadius());
   program->SetUniformi("vtkShadowPCFBilinear", this->GetPCFBilinear() ? 1 : 0);
   program->SetUniformf("vtkShadowNormalBias", static_cast<float>(this->NormalBias));
+  program->SetUniformf("vtkShadowCubeTexel", 2.0f / static_cast<float>(this->MapSize));
+  program->SetUniformf("vtkShadowDistanceBias", static_cast<float>(this->DistanceBias));
 
   const auto& lights = this->Maps->GetLights();
   for (size_t slot = 0; slot < lights.size(); ++slot)
   {
+    const auto& light = lights[slot];
     const int i = static_cast<int>(slot);
-    vtkShadowMapManager::SetFrustumUniforms(
-      program, "vtkShadow", "[" + std::to_string(i) + "]", lights[slot].Map, this->MapSize);
-    program->SetUniformi(
-      Indexed("vtkShadowMap", i).c_str(), lights[slot].DepthMap->GetTextureUnit());
     program->SetUniformf(
-      Indexed("vtkShadowAttenuation", i).c_str(), static_cast<float>(lights[slot].Attenuation));
+      Indexed("vtkShadowAttenuation", i).c_str(), static_cast<float>(light.Attenuation));
+    if (light.Point)
+    {
+      program->SetUniformi(
+        Indexed("vtkShadowCube", light.MapIndex).c_str(), light.CubeMap->GetTextureUnit());
+      const float center[3] = { static_cast<float>(light.Position.x),
+        static_cast<float>(light.Position.y), static_cast<float>(light.Position.z) };
+      program->SetUniform3f(Indexed("vtkShadowCubeCenter", light.MapIndex).c_str(), center);
+      continue;
+    }
+    vtkShadowMapManager::SetFrustumUniforms(
+      program, "vtkShadow", "[" + std::to_string(i) + "]", light.Map, this->MapSize);
+    program->SetUniformi(
+      Indexed("vtkShadowMap", light.MapIndex).c_str(), light.DepthMap->GetTextureUnit());
   }
   if (this->UsesScreenSpace())
   {
@@ -378,6 +441,7 @@ void vtkSoftShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SlopeScaledBias: " << this->SlopeScaledBias << "\n";
   os << indent << "ConstantBias: " << this->ConstantBias << "\n";
   os << indent << "NormalBias: " << this->NormalBias << "\n";
+  os << indent << "DistanceBias: " << this->DistanceBias << "\n";
   os << indent << "ShadowOnlyLight: " << this->ShadowOnlyLight << "\n";
   os << indent << "DelegatePass: ";
   if (this->DelegatePass)

@@ -16,9 +16,11 @@
  *     vtkOpenGLPolyDataMapper and scales light N's diffuse and specular
  *     (Phong) or radiance (PBR) with it.
  *
- * A light casts shadows when it is switched on, is not a headlight, and is
- * directional or a spot light (cone angle < 90). Point lights are not handled
- * yet: they are reported once with an error and drawn unshadowed.
+ * A light casts shadows when it is switched on and is not a headlight: spot
+ * lights (cone angle < 90) and directional lights through 2D maps, point
+ * lights (positional, cone angle >= 90) through cube maps of squared
+ * distances, for the techniques that support them (SupportsPointLights());
+ * the others report point lights once with an error and draw them unshadowed.
  *
  * The light's size comes from SetRadius()/GetRadius(), stored in the light's
  * information like vtkOSPRayLightNode does: world units for spot and point
@@ -96,6 +98,16 @@ public:
 
   ///@{
   /**
+   * Multiplicative bias on squared distances in point lights' cube maps
+   * (Gerasimov, section 12.3.7): a point is lit when its squared distance
+   * times this factor is at most the stored one. Default 0.99.
+   */
+  vtkSetClampMacro(DistanceBias, double, 0.5, 1.0);
+  vtkGetMacro(DistanceBias, double);
+  ///@}
+
+  ///@{
+  /**
    * When >= 0, draw the visibility of this light (index in the renderer's
    * light collection) instead of the shaded colour. Default -1 (off).
    */
@@ -154,6 +166,11 @@ protected:
   virtual bool UsesScreenSpace() const { return false; }
 
   /**
+   * Whether the technique shadows point lights (cube maps). Default false.
+   */
+  virtual bool SupportsPointLights() const { return false; }
+
+  /**
    * GLSL declarations the technique adds to receivers' fragment shaders,
    * after the framework's own (vtkSoftShadowReceiverFS.glsl). Default: none.
    */
@@ -190,8 +207,9 @@ protected:
   enum class Stage
   {
     Idle,
-    LightDepth, ///< drawing depth from a light or the camera: no shading
-    Receivers   ///< final drawing with the shadow term
+    LightDepth,    ///< drawing depth from a light or the camera: no shading
+    LightDistance, ///< drawing squared distances to a point light: cube faces
+    Receivers      ///< final drawing with the shadow term
   };
   void SetStage(Stage stage);
   Stage GetStage() const { return this->CurrentStage; }
@@ -200,6 +218,7 @@ protected:
   double SlopeScaledBias = 2.0;
   double ConstantBias = 4.0;
   double NormalBias = 1.0;
+  double DistanceBias = 0.99;
   int ShadowOnlyLight = -1;
   vtkRenderPass* DelegatePass = nullptr;
 
@@ -214,6 +233,8 @@ private:
   friend class vtkShadowScreenBuffers;
 
   Stage CurrentStage = Stage::Idle;
+  float FaceClipToView[16]; ///< LightDistance: the face's inverse projection
+  float FaceSize = 1.0f;    ///< LightDistance: the face's width in texels
   bool LinearMaps = false;
   vtkTimeStamp StageTime;
   bool PointLightReported = false;

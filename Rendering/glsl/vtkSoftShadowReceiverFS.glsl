@@ -1,12 +1,12 @@
 // Shadow term of the receivers' fragment shaders, shared by every technique.
 // Inserted by vtkSoftShadowPass after VTK_SHADOW_LIGHTS (number of shadowed
-// lights) and, for screen-space techniques, VTK_SHADOW_SCREEN_SPACE are
-// defined. Arrays are indexed with constants only (GLSL 1.50 samplers).
+// lights), VTK_SHADOW_MAPS and VTK_SHADOW_CUBES (how many of them have a 2D
+// map, a cube map) and, for screen-space techniques, VTK_SHADOW_SCREEN_SPACE
+// are defined. Sampler arrays are indexed with constants only (GLSL 1.50).
 
 uniform mat4 vtkShadowViewToWorld;
 uniform mat4 vtkShadowWorldToMap[VTK_SHADOW_LIGHTS];
 uniform float vtkShadowAttenuation[VTK_SHADOW_LIGHTS];
-uniform sampler2DShadow vtkShadowMap[VTK_SHADOW_LIGHTS];
 uniform vec4 vtkShadowEye[VTK_SHADOW_LIGHTS];
 uniform vec3 vtkShadowAxis[VTK_SHADOW_LIGHTS];
 uniform vec2 vtkShadowFootprint[VTK_SHADOW_LIGHTS];
@@ -27,6 +27,9 @@ vec4 vtkShadowReceiver(int i, vec4 positionWC, vec3 normalWC)
 // corners, (2r)^2 of them, each averaging 2x2 texels: the same footprint
 // with tent weights for fewer taps. Outside the map is lit.
 uniform bool vtkShadowPCFBilinear;
+#if VTK_SHADOW_MAPS > 0
+uniform sampler2DShadow vtkShadowMap[VTK_SHADOW_MAPS];
+#endif
 
 float vtkShadowLookup(sampler2DShadow map, mat4 worldToMap, vec4 positionWC, int radius)
 {
@@ -57,6 +60,44 @@ float vtkShadowLookup(sampler2DShadow map, mat4 worldToMap, vec4 positionWC, int
   }
   return lit / float(taps * taps);
 }
+
+#if VTK_SHADOW_CUBES > 0
+// Point lights (Gerasimov, GPU Gems ch. 12): cube maps of squared distances
+// to the light, looked up with the light-to-fragment direction.
+uniform samplerCube vtkShadowCube[VTK_SHADOW_CUBES];
+uniform vec3 vtkShadowCubeCenter[VTK_SHADOW_CUBES];
+uniform float vtkShadowCubeTexel;   // a texel's world size per unit of distance
+uniform float vtkShadowDistanceBias; // multiplicative, on squared distances
+
+float vtkShadowCubeLookup(samplerCube cube, vec3 center, vec4 positionWC, vec3 normalWC,
+  int radius)
+{
+  vec3 toPoint = positionWC.xyz - center;
+  // Normal offset by vtkShadowNormalBias texels, towards the light.
+  vec3 n = dot(normalWC, toPoint) > 0.0 ? -normalWC : normalWC;
+  float axis = max(abs(toPoint.x), max(abs(toPoint.y), abs(toPoint.z)));
+  float texel = vtkShadowCubeTexel * axis;
+  vec3 d = toPoint + n * (texel * vtkShadowNormalBias);
+  // Section 12.3.7: the multiplicative bias "works best in practice".
+  float reference = dot(d, d) * vtkShadowDistanceBias;
+  if (radius == 0)
+  {
+    return reference <= texture(cube, d).r ? 1.0 : 0.0;
+  }
+  // Section 12.4: 4-tap PCF, the taps `radius` texels apart across d.
+  vec3 u = normalize(cross(d, abs(d.x) < 0.9 * length(d) ? vec3(1.0, 0.0, 0.0)
+                                                          : vec3(0.0, 1.0, 0.0)));
+  vec3 v = cross(normalize(d), u);
+  float step = 0.5 * float(radius) * texel;
+  float lit = 0.0;
+  for (int i = 0; i < 4; ++i)
+  {
+    vec2 o = vec2((i & 1) == 0 ? -1.0 : 1.0, (i & 2) == 0 ? -1.0 : 1.0) * step;
+    lit += reference <= texture(cube, d + o.x * u + o.y * v).r ? 0.25 : 0.0;
+  }
+  return lit;
+}
+#endif
 
 #ifdef VTK_SHADOW_SCREEN_SPACE
 uniform sampler2D vtkShadowScreen[VTK_SHADOW_LIGHTS];

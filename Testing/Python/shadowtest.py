@@ -251,3 +251,76 @@ def edge_width_pixels(scene, visibility, x0, low=0.02, high=0.98):
     if not band.any():
         return 0.0
     return float((z[band].max() - z[band].min()) / np.median(pixel[near]))
+
+
+def ray_box(origin, rays, lo, hi):
+    """Slab test: entry and exit ray parameters of an axis-aligned box
+    (entry > exit where missed)."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        inverse = 1.0 / rays
+        t0 = (np.asarray(lo) - origin) * inverse
+        t1 = (np.asarray(hi) - origin) * inverse
+    near = np.nanmax(np.minimum(t0, t1), axis=-1)
+    far = np.nanmin(np.maximum(t0, t1), axis=-1)
+    return near, far
+
+
+def segment_hits_box(points, target, lo, hi):
+    """Whether the segments points -> target pass through a box."""
+    d = target - points
+    near, far = ray_box(points, d, lo, hi)
+    return (near <= far) & (far > 0.0) & (near < 1.0)
+
+
+# The room: a closed 8^3 box around a point light at the origin, one occluder
+# towards each of the six walls.
+ROOM_HALF = 4.0
+ROOM_BOXES = [((1.6, 0, 0), (0.9, 0.3, 0.3)), ((-1.6, 0, 0), (0.3, 0.9, 0.9)),
+              ((0, 1.6, 0), (0.3, 0.9, 0.3)), ((0, 0, 1.6), (0.9, 0.9, 0.3)),
+              ((0, 0, -1.6), (0.3, 0.3, 0.9))]
+ROOM_BALL = ((0.0, -1.6, 0.0), 0.4)
+BOX_HALF = 0.3
+
+
+def room_scene(camera, light_radius=0.0, technique="hard", size=(240, 180)):
+    actors = [{"source": "cube", "params": {"size": [2 * ROOM_HALF] * 3}, "color": [0.9] * 3}]
+    for position, color in ROOM_BOXES:
+        actors.append({"source": "cube", "params": {"size": [2 * BOX_HALF] * 3},
+                       "position": list(position), "color": list(color)})
+    actors.append({"source": "sphere", "params": {"radius": ROOM_BALL[1]},
+                   "position": list(ROOM_BALL[0]), "color": [0.9, 0.6, 0.2]})
+    return {"name": "room", "size": list(size), "camera": camera,
+            "lights": [{"type": "point", "position": [0.0, 0.0, 0.0], "radius": light_radius}],
+            "actors": actors, "shadows": {"technique": technique, "map_size": 512}}
+
+
+def room_expected(scene):
+    """Per pixel: whether it shows a wall, the wall point, and whether the
+    point light is hidden from it."""
+    camera = scene["camera"]
+    eye = np.array(camera["position"], float)
+    rays = camera_rays(camera, scene["size"])
+    _, t_wall = ray_box(eye, rays, [-ROOM_HALF] * 3, [ROOM_HALF] * 3)
+    t_first = t_wall.copy()
+    for position, _ in ROOM_BOXES:
+        p = np.array(position)
+        near, far = ray_box(eye, rays, p - BOX_HALF, p + BOX_HALF)
+        t_first = np.where((near <= far) & (near > 0), np.minimum(t_first, near), t_first)
+    t_first = np.minimum(t_first, sphere_hit(eye, rays, np.array(ROOM_BALL[0]), ROOM_BALL[1]))
+    wall = t_wall <= t_first
+    points = eye + t_wall[:, :, None] * rays
+    light = np.zeros(3)
+    hidden = segment_clearance(points, light, np.array(ROOM_BALL[0]), ROOM_BALL[1]) < 0
+    for position, _ in ROOM_BOXES:
+        p = np.array(position)
+        hidden |= segment_hits_box(points, light, p - BOX_HALF, p + BOX_HALF)
+    return wall, points, hidden
+
+
+def interior(mask, margin):
+    """Pixels whose (2 margin + 1)^2 neighbourhood lies entirely in mask."""
+    result = mask.copy()
+    for dy in range(-margin, margin + 1):
+        for dx in range(-margin, margin + 1):
+            result &= np.roll(np.roll(mask, dy, axis=0), dx, axis=1)
+    return result

@@ -1,0 +1,113 @@
+// Two point lights and a spot light together (Gerasimov, GPU Gems ch. 12):
+// a post on the ground casts one shadow from each, each light's shadow-only
+// output is dark exactly behind the post from that light and lit where only
+// the other lights are hidden.
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCubeSource.h"
+#include "vtkHardShadowPass.h"
+#include "vtkLight.h"
+#include "vtkNew.h"
+#include "vtkPlaneSource.h"
+#include "vtkRegressionTestImage.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkUnsignedCharArray.h"
+
+#include "ShadowTestScene.h"
+
+#include <cmath>
+#include <iostream>
+
+namespace
+{
+double VisibilityAt(vtkRenderer* renderer, vtkRenderWindow* window, const double p[3])
+{
+  renderer->SetWorldPoint(p[0], p[1], p[2], 1.0);
+  renderer->WorldToDisplay();
+  const double* d = renderer->GetDisplayPoint();
+  const int x = static_cast<int>(std::lround(d[0]));
+  const int y = static_cast<int>(std::lround(d[1]));
+  vtkNew<vtkUnsignedCharArray> rgb;
+  window->GetPixelData(x, y, x, y, 0, rgb);
+  return rgb->GetValue(0) / 255.0;
+}
+
+vtkLight* AddLight(vtkRenderer* renderer, double x, double y, double z, double cone)
+{
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPositional(true);
+  light->SetPosition(x, y, z);
+  light->SetFocalPoint(0, 0, 0);
+  light->SetConeAngle(cone);
+  light->SetIntensity(0.5);
+  renderer->AddLight(light);
+  return light;
+}
+}
+
+int TestPointLightShadows(int argc, char* argv[])
+{
+  vtkNew<vtkRenderer> renderer;
+  const double ground[3] = { 0.85, 0.85, 0.85 };
+  const double blue[3] = { 0.3, 0.45, 0.9 };
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-3, 0, -3);
+  plane->SetPoint1(3, 0, -3);
+  plane->SetPoint2(-3, 0, 3);
+  ShadowTestScene::AddActor(renderer, plane, ground);
+  vtkNew<vtkCubeSource> post;
+  post->SetCenter(0, 0.6, 0);
+  post->SetXLength(0.4);
+  post->SetYLength(1.2);
+  post->SetZLength(0.4);
+  ShadowTestScene::AddActor(renderer, post, blue);
+
+  AddLight(renderer, 2.0, 1.5, 0.0, 180.0);  // point: shadow towards -x
+  AddLight(renderer, 0.0, 1.5, 2.0, 180.0);  // point: shadow towards -z
+  AddLight(renderer, -3.0, 3.0, -3.0, 40.0); // spot: shadow towards +x +z
+
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(3, 6, 4);
+  camera->SetFocalPoint(0, 0, 0);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetViewAngle(40);
+  renderer->ResetCameraClippingRange();
+  renderer->SetBackground(0.1, 0.1, 0.12);
+
+  vtkNew<vtkHardShadowPass> pass;
+  pass->SetMapSize(512);
+  renderer->SetPass(pass);
+  vtkNew<vtkRenderWindow> window;
+  window->SetSize(300, 240);
+  window->AddRenderer(renderer);
+  window->Render();
+  if (pass->GetNumberOfShadowedLights() != 3)
+  {
+    std::cerr << "expected 3 shadowed lights, got " << pass->GetNumberOfShadowedLights() << "\n";
+    return EXIT_FAILURE;
+  }
+  int result = vtkRegressionTestImage(window);
+
+  // Ground points where each light's shadow falls (through the post's centre).
+  const double behind[3][3] = { { -4.0 / 3.0, 0, 0 }, { 0, 0, -4.0 / 3.0 }, { 0.75, 0, 0.75 } };
+  bool ok = true;
+  for (int light = 0; light < 3; ++light)
+  {
+    pass->SetShadowOnlyLight(light);
+    window->Render();
+    for (int point = 0; point < 3; ++point)
+    {
+      const double expected = point == light ? 0.0 : 1.0;
+      const double v = VisibilityAt(renderer, window, behind[point]);
+      if (std::abs(v - expected) > 0.1)
+      {
+        std::cerr << "light " << light << " at (" << behind[point][0] << ", " << behind[point][2]
+                  << "): visibility " << v << ", expected " << expected << "\n";
+        ok = false;
+      }
+    }
+  }
+  return (result == vtkRegressionTester::FAILED || !ok) ? EXIT_FAILURE : EXIT_SUCCESS;
+}
