@@ -20,7 +20,9 @@ set(softshadows_rendering_shaders
   vtkContactPCFFS
   vtkContactPrepareFS
   vtkContactResolveFS
+  vtkShadowAccumulateCubeFS
   vtkShadowAccumulateFS
+  vtkShadowCubeLookupFS
   vtkShadowNormalOffsetFS
   vtkShadowScreenCommonFS
   vtkSoftShadowReceiverFS)

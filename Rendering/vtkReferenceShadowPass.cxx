@@ -12,7 +12,9 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
+#include "vtkShadowAccumulateCubeFS.h"
 #include "vtkShadowAccumulateFS.h"
+#include "vtkShadowCubeLookupFS.h"
 #include "vtkShadowNormalOffsetFS.h"
 
 #include <glm/geometric.hpp>
@@ -80,8 +82,8 @@ void Basis(const glm::dvec3& axis, glm::dvec3& e1, glm::dvec3& e2)
 class vtkReferenceShadowPass::vtkInternals
 {
 public:
-  std::unique_ptr<vtkOpenGLQuadHelper> Accumulate;
-  vtkShadowMapManager::Light Sample; // owns the scratch map of one light sample
+  std::unique_ptr<vtkOpenGLQuadHelper> Accumulate, AccumulateCube;
+  vtkShadowMapManager::Light Sample; // owns the scratch maps of one light sample
 };
 
 vtkStandardNewMacro(vtkReferenceShadowPass);
@@ -105,20 +107,19 @@ bool vtkReferenceShadowPass::RenderShadowMaps(const vtkRenderState* s)
 bool vtkReferenceShadowPass::RenderScreenSpace(const vtkRenderState* s)
 {
   auto* context = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
-  vtkOpenGLState* state = context->GetState();
   vtkInternals& internals = *this->Internals;
-  if (!internals.Accumulate || internals.Accumulate->Program == nullptr)
+  if (!internals.Accumulate)
   {
     internals.Accumulate = this->Screen->CreateQuad(
       context, std::string(vtkShadowNormalOffsetFS) + "\n" + vtkShadowAccumulateFS);
-    if (!internals.Accumulate->Program)
-    {
-      vtkErrorMacro("Could not build the accumulation shader.");
-      return false;
-    }
+    internals.AccumulateCube = this->Screen->CreateQuad(
+      context, std::string(vtkShadowCubeLookupFS) + "\n" + vtkShadowAccumulateCubeFS);
   }
-  this->Maps->AllocateDepthMap(context, internals.Sample, this->MapSize, false);
-  vtkTextureObject* sampleMap = internals.Sample.DepthMap;
+  if (!internals.Accumulate->Program || !internals.AccumulateCube->Program)
+  {
+    vtkErrorMacro("Could not build the accumulation shaders.");
+    return false;
+  }
 
   auto& lights = this->Maps->GetLights();
   for (size_t slot = 0; slot < lights.size(); ++slot)
@@ -132,8 +133,8 @@ bool vtkReferenceShadowPass::RenderScreenSpace(const vtkRenderState* s)
     this->Screen->BeginVisibility(static_cast<int>(slot), 0.0f);
     for (const auto& d : disc)
     {
-      // Spot: points on a disc of `radius` across the axis. Directional:
-      // directions within the angular radius.
+      // Spot and point lights: points on a disc of `radius` across the axis.
+      // Directional: directions within the angular radius.
       glm::dvec3 eye = light.Position;
       glm::dvec3 direction = light.Direction;
       if (light.Directional)
@@ -145,30 +146,85 @@ bool vtkReferenceShadowPass::RenderScreenSpace(const vtkRenderState* s)
       {
         eye += light.Radius * (d.x * e1 + d.y * e2);
       }
-      const auto frustum = this->Maps->FitFrustum(light, eye, direction);
-      if (!this->Maps->RenderDepth(s, this, frustum, sampleMap))
+      const double eyeWC[3] = { eye.x, eye.y, eye.z };
+      const double directionWC[3] = { direction.x, direction.y, direction.z };
+      if (!this->AccumulateSample(s, static_cast<int>(slot), eyeWC, directionWC, weight))
       {
         this->Screen->EndVisibility();
         return false;
       }
-
-      vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
-      vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(state);
-      state->vtkglEnable(GL_BLEND);
-      state->vtkglBlendFunc(GL_ONE, GL_ONE);
-      sampleMap->Activate();
-      this->Screen->DrawQuad(internals.Accumulate.get(),
-        [&](vtkShaderProgram* program)
-        {
-          program->SetUniformi("sampleMap", sampleMap->GetTextureUnit());
-          vtkShadowMapManager::SetFrustumUniforms(program, "sample", "", frustum, this->MapSize);
-          program->SetUniformf("sampleNormalBias", static_cast<float>(this->NormalBias));
-          program->SetUniformf("sampleWeight", weight);
-        });
-      sampleMap->Deactivate();
     }
     this->Screen->EndVisibility();
   }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkReferenceShadowPass::AccumulateSample(const vtkRenderState* s, int slot,
+  const double eyeWC[3], const double directionWC[3], float weight)
+{
+  const auto& light = this->Maps->GetLights()[slot];
+  const glm::dvec3 eye(eyeWC[0], eyeWC[1], eyeWC[2]);
+  const glm::dvec3 direction(directionWC[0], directionWC[1], directionWC[2]);
+  auto* context = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
+  vtkOpenGLState* state = context->GetState();
+  vtkInternals& internals = *this->Internals;
+  vtkShadowMapManager::Light& sample = internals.Sample;
+
+  vtkShadowMapManager::Frustum frustum;
+  vtkTextureObject* map = nullptr;
+  if (light.Point)
+  {
+    this->Maps->AllocateCubeMap(context, sample, this->MapSize);
+    map = sample.CubeMap;
+    if (!this->Maps->RenderDistanceCube(s, this, this->Maps->CubeFaces(eye), map))
+    {
+      return false;
+    }
+  }
+  else
+  {
+    this->Maps->AllocateDepthMap(context, sample, this->MapSize, false);
+    map = sample.DepthMap;
+    frustum = this->Maps->FitFrustum(light, eye, direction);
+    if (!this->Maps->RenderDepth(s, this, frustum, map))
+    {
+      return false;
+    }
+  }
+
+  vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(state);
+  state->vtkglEnable(GL_BLEND);
+  state->vtkglBlendFunc(GL_ONE, GL_ONE);
+  map->Activate();
+  if (light.Point)
+  {
+    this->Screen->DrawQuad(internals.AccumulateCube.get(),
+      [&](vtkShaderProgram* program)
+      {
+        program->SetUniformi("sampleCube", map->GetTextureUnit());
+        const float center[3] = { static_cast<float>(eye.x), static_cast<float>(eye.y),
+          static_cast<float>(eye.z) };
+        program->SetUniform3f("sampleEye", center);
+        program->SetUniformf("sampleTexel", 2.0f / static_cast<float>(this->MapSize));
+        program->SetUniformf("sampleNormalBias", static_cast<float>(this->NormalBias));
+        program->SetUniformf("sampleDistanceBias", static_cast<float>(this->DistanceBias));
+        program->SetUniformf("sampleWeight", weight);
+      });
+  }
+  else
+  {
+    this->Screen->DrawQuad(internals.Accumulate.get(),
+      [&](vtkShaderProgram* program)
+      {
+        program->SetUniformi("sampleMap", map->GetTextureUnit());
+        vtkShadowMapManager::SetFrustumUniforms(program, "sample", "", frustum, this->MapSize);
+        program->SetUniformf("sampleNormalBias", static_cast<float>(this->NormalBias));
+        program->SetUniformf("sampleWeight", weight);
+      });
+  }
+  map->Deactivate();
   return true;
 }
 
@@ -177,10 +233,14 @@ void vtkReferenceShadowPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);
   this->Internals->Accumulate.reset();
-  if (this->Internals->Sample.DepthMap)
+  this->Internals->AccumulateCube.reset();
+  for (auto* map : { &this->Internals->Sample.DepthMap, &this->Internals->Sample.CubeMap })
   {
-    this->Internals->Sample.DepthMap->ReleaseGraphicsResources(w);
-    this->Internals->Sample.DepthMap = nullptr;
+    if (*map)
+    {
+      (*map)->ReleaseGraphicsResources(w);
+    }
+    *map = nullptr;
   }
 }
 

@@ -5,8 +5,9 @@
  *
  * Technique `reference`. For each shadowed light it draws NumberOfSamples
  * depth maps, from points on a disc of the light's radius perpendicular to
- * its axis (spot lights) or from directions within its angular radius
- * (directional lights), and averages their binary visibility per pixel in a
+ * its axis (spot lights) or across the direction to the scene's centre (point
+ * lights, each sample a whole cube map), or from directions within its
+ * angular radius (directional lights), and averages their binary visibility per pixel in a
  * screen-space texture. The samples are stratified (jittered on a grid mapped
  * to the disc by Shirley's concentric mapping) with a fixed seed, so every run
  * gives the same image. Radius 0 draws one sample: exactly `hard` without PCF.
@@ -56,6 +57,7 @@ protected:
   bool RenderShadowMaps(const vtkRenderState* s) override;
   bool RenderScreenSpace(const vtkRenderState* s) override;
   bool UsesScreenSpace() const override { return true; }
+  bool SupportsPointLights() const override { return true; }
 
   int NumberOfSamples = 256;
   unsigned int Seed = 1;
@@ -63,6 +65,14 @@ protected:
 private:
   vtkReferenceShadowPass(const vtkReferenceShadowPass&) = delete;
   void operator=(const vtkReferenceShadowPass&) = delete;
+
+  /**
+   * Draw one light sample's map (a cube for point lights) from `eye` along
+   * `direction` and add its visibility, times `weight`, to light `slot`'s
+   * screen-space texture.
+   */
+  bool AccumulateSample(const vtkRenderState* s, int slot, const double eye[3],
+    const double direction[3], float weight);
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

@@ -16,6 +16,7 @@
 #include "vtkShadowScreenBuffers.h"
 #include "vtkTextureObject.h"
 
+#include "vtkShadowCubeLookupFS.h"
 #include "vtkShadowNormalOffsetFS.h"
 #include "vtkSoftShadowReceiverFS.h"
 
@@ -235,20 +236,21 @@ std::string vtkSoftShadowPass::GetVisibilityExpression(int slot)
   const auto& light = this->Maps->GetLights()[slot];
   const std::string i = std::to_string(slot);
   const std::string m = std::to_string(light.MapIndex);
-  if (light.Point)
-  {
-    return "vtkShadowCubeLookup(vtkShadowCube[" + m + "], vtkShadowCubeCenter[" + m +
-      "], vtkShadowPositionWC, vtkShadowNormalWC, vtkShadowPCFRadius)";
-  }
-  const std::string receiver =
-    "vtkShadowReceiver(" + i + ", vtkShadowPositionWC, vtkShadowNormalWC)";
+  const std::string hard = light.Point
+    ? "vtkShadowCubeLookup(vtkShadowCube[" + m + "], vtkShadowCubeCenter[" + m +
+      "], vtkShadowPositionWC, vtkShadowNormalWC, vtkShadowCubeTexel, vtkShadowNormalBias, "
+      "vtkShadowDistanceBias, vtkShadowPCFRadius)"
+    : "vtkShadowLookup(vtkShadowMap[" + m + "], vtkShadowWorldToMap[" + i +
+      "], vtkShadowReceiver(" + i + ", vtkShadowPositionWC, vtkShadowNormalWC), " +
+      "vtkShadowPCFRadius)";
   if (this->UsesScreenSpace())
   {
-    return "vtkShadowScreenVisibility(vtkShadowScreen[" + i + "], vtkShadowMap[" + m +
-      "], vtkShadowWorldToMap[" + i + "], " + receiver + ")";
+    // The ternary evaluates only one side: hard lookups for the few
+    // fragments the screen does not cover.
+    return "(vtkShadowOnScreenSurface() ? vtkShadowScreenValue(vtkShadowScreen[" + i +
+      "]) : " + hard + ")";
   }
-  return "vtkShadowLookup(vtkShadowMap[" + m + "], vtkShadowWorldToMap[" + i + "], " + receiver +
-    ", vtkShadowPCFRadius)";
+  return hard;
 }
 
 //------------------------------------------------------------------------------
@@ -320,6 +322,7 @@ bool vtkSoftShadowPass::PostReplaceShaderValues(
       dec << "#define VTK_SHADOW_SCREEN_SPACE\n";
     }
     dec << vtkShadowNormalOffsetFS << "\n"
+        << vtkShadowCubeLookupFS << "\n"
         << vtkSoftShadowReceiverFS << "\n"
         << this->GetVisibilityDeclarations() << "\n";
 

@@ -62,41 +62,11 @@ float vtkShadowLookup(sampler2DShadow map, mat4 worldToMap, vec4 positionWC, int
 }
 
 #if VTK_SHADOW_CUBES > 0
-// Point lights (Gerasimov, GPU Gems ch. 12): cube maps of squared distances
-// to the light, looked up with the light-to-fragment direction.
+// Point lights: cube maps of squared distances (vtkShadowCubeLookupFS.glsl).
 uniform samplerCube vtkShadowCube[VTK_SHADOW_CUBES];
 uniform vec3 vtkShadowCubeCenter[VTK_SHADOW_CUBES];
 uniform float vtkShadowCubeTexel;   // a texel's world size per unit of distance
 uniform float vtkShadowDistanceBias; // multiplicative, on squared distances
-
-float vtkShadowCubeLookup(samplerCube cube, vec3 center, vec4 positionWC, vec3 normalWC,
-  int radius)
-{
-  vec3 toPoint = positionWC.xyz - center;
-  // Normal offset by vtkShadowNormalBias texels, towards the light.
-  vec3 n = dot(normalWC, toPoint) > 0.0 ? -normalWC : normalWC;
-  float axis = max(abs(toPoint.x), max(abs(toPoint.y), abs(toPoint.z)));
-  float texel = vtkShadowCubeTexel * axis;
-  vec3 d = toPoint + n * (texel * vtkShadowNormalBias);
-  // Section 12.3.7: the multiplicative bias "works best in practice".
-  float reference = dot(d, d) * vtkShadowDistanceBias;
-  if (radius == 0)
-  {
-    return reference <= texture(cube, d).r ? 1.0 : 0.0;
-  }
-  // Section 12.4: 4-tap PCF, the taps `radius` texels apart across d.
-  vec3 u = normalize(cross(d, abs(d.x) < 0.9 * length(d) ? vec3(1.0, 0.0, 0.0)
-                                                          : vec3(0.0, 1.0, 0.0)));
-  vec3 v = cross(normalize(d), u);
-  float step = 0.5 * float(radius) * texel;
-  float lit = 0.0;
-  for (int i = 0; i < 4; ++i)
-  {
-    vec2 o = vec2((i & 1) == 0 ? -1.0 : 1.0, (i & 2) == 0 ? -1.0 : 1.0) * step;
-    lit += reference <= texture(cube, d + o.x * u + o.y * v).r ? 0.25 : 0.0;
-  }
-  return lit;
-}
 #endif
 
 #ifdef VTK_SHADOW_SCREEN_SPACE
@@ -104,18 +74,17 @@ uniform sampler2D vtkShadowScreen[VTK_SHADOW_LIGHTS];
 uniform sampler2D vtkShadowCameraDepth;
 uniform vec2 vtkShadowViewportOrigin;
 
-// Screen-space visibility belongs to the nearest opaque surface, which the
-// camera depth pre-pass saw. Other fragments (translucent ones) take the
-// hard shadow of the light's own map.
-float vtkShadowScreenVisibility(
-  sampler2D screen, sampler2DShadow map, mat4 worldToMap, vec4 receiverWC)
+// Screen-space visibility belongs to the nearest opaque surface, the one the
+// camera depth pre-pass saw; other fragments (translucent ones) take the hard
+// shadow of the light's own map instead.
+bool vtkShadowOnScreenSurface()
 {
   ivec2 pixel = ivec2(gl_FragCoord.xy - vtkShadowViewportOrigin);
-  float depth = texelFetch(vtkShadowCameraDepth, pixel, 0).r;
-  if (abs(depth - gl_FragCoord.z) <= 1.0e-5)
-  {
-    return texelFetch(screen, pixel, 0).r;
-  }
-  return vtkShadowLookup(map, worldToMap, receiverWC, 0);
+  return abs(texelFetch(vtkShadowCameraDepth, pixel, 0).r - gl_FragCoord.z) <= 1.0e-5;
+}
+
+float vtkShadowScreenValue(sampler2D screen)
+{
+  return texelFetch(screen, ivec2(gl_FragCoord.xy - vtkShadowViewportOrigin), 0).r;
 }
 #endif
