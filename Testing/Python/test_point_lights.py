@@ -45,3 +45,19 @@ for w in range(6):
     st.check(walls_seen[w, 0] > 20 and walls_seen[w, 1] > 200,
              "wall %s: shadow and light checked (%d, %d px)"
              % (names[w], walls_seen[w, 0], walls_seen[w, 1]))
+
+# The reference shadows point lights too: with radius 0, one cube map at the
+# light, it is `hard`; with a radius its shadows soften.
+scene = st.room_scene(views[0])
+hard, geometry = st.shadow_only(scene, "hard")
+reference, _ = st.shadow_only(scene, "reference")
+differ = geometry & (np.abs(hard - reference) > 0.02)
+st.check(differ.sum() <= 0.002 * geometry.sum(),
+         "radius 0: reference equals hard for point lights (%d of %d pixels differ)"
+         % (differ.sum(), geometry.sum()))
+soft_scene = st.room_scene(views[0], light_radius=0.3, technique="reference")
+soft_scene["shadows"]["reference"] = {"samples": 64}
+soft, _ = st.shadow_only(soft_scene)
+penumbra = geometry & (soft > 0.05) & (soft < 0.95)
+st.check(penumbra.sum() > 4 * np.sum(geometry & (hard > 0.05) & (hard < 0.95)),
+         "radius 0.3: the reference grows penumbrae (%d px)" % penumbra.sum())
