@@ -22,6 +22,7 @@ set(softshadows_rendering_shaders
   vtkContactResolveFS
   vtkShadowAccumulateCubeFS
   vtkShadowAccumulateFS
+  vtkShadowCubeLayersGS
   vtkShadowCubeLookupFS
   vtkShadowNormalOffsetFS
   vtkShadowScreenCommonFS

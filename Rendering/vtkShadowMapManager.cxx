@@ -358,6 +358,11 @@ bool vtkShadowMapManager::RenderDistanceCube(const vtkRenderState* s, vtkSoftSha
     this->DepthFramebuffer->SetContext(context);
   }
 
+  if (pass->GetSinglePassCubeMaps())
+  {
+    return this->DrawLayeredCube(s, pass, faces, cube);
+  }
+
   vtkSmartPointer<vtkCamera> viewCamera = renderer->GetActiveCamera();
   vtkOpenGLState* state = context->GetState();
   state->PushFramebufferBindings();
@@ -383,6 +388,83 @@ bool vtkShadowMapManager::RenderDistanceCube(const vtkRenderState* s, vtkSoftSha
     renderer->SetActiveCamera(viewCamera);
   }
   state->PopFramebufferBindings();
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowMapManager::DrawLayeredCube(const vtkRenderState* s, vtkSoftShadowPass* pass,
+  const std::array<Frustum, 6>& faces, vtkTextureObject* cube)
+{
+  vtkRenderer* renderer = s->GetRenderer();
+  auto* context = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  vtkOpenGLState* state = context->GetState();
+  const int size = static_cast<int>(cube->GetWidth());
+  if (this->LayeredContext != context)
+  {
+    this->LayeredFramebuffer = 0;
+    this->LayeredDepth = 0;
+    this->LayeredContext = context;
+  }
+  if (!this->LayeredFramebuffer)
+  {
+    glGenFramebuffers(1, &this->LayeredFramebuffer);
+  }
+  if (!this->LayeredDepth || this->LayeredDepthSize != size)
+  {
+    if (!this->LayeredDepth)
+    {
+      glGenTextures(1, &this->LayeredDepth);
+    }
+    glBindTexture(GL_TEXTURE_CUBE_MAP, this->LayeredDepth);
+    for (int f = 0; f < 6; ++f)
+    {
+      glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, 0, GL_DEPTH_COMPONENT32F, size, size, 0,
+        GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+    }
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    this->LayeredDepthSize = size;
+  }
+
+  state->PushFramebufferBindings();
+  state->vtkglBindFramebuffer(GL_FRAMEBUFFER, this->LayeredFramebuffer);
+  glFramebufferTexture(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, cube->GetHandle(), 0);
+  glFramebufferTexture(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, this->LayeredDepth, 0);
+  state->vtkglDrawBuffer(GL_COLOR_ATTACHMENT0);
+  const bool complete = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+  bool ok = false;
+  if (complete)
+  {
+    // The vertex shader draws for face 0; the geometry shader takes face 0's
+    // clip space to each face's: P V_f V_0^-1 P^-1 (all faces share P).
+    const glm::dmat4 fromFirstClip = glm::inverse(faces[0].Projection * faces[0].View);
+    for (int f = 0; f < 6; ++f)
+    {
+      const glm::mat4 m(faces[f].Projection * faces[f].View * fromFirstClip);
+      std::copy(glm::value_ptr(m), glm::value_ptr(m) + 16, pass->FaceFromFirst[f]);
+    }
+    const glm::mat4 clipToView(glm::inverse(faces[0].Projection));
+    std::copy(glm::value_ptr(clipToView), glm::value_ptr(clipToView) + 16, pass->FaceClipToView);
+    pass->FaceSize = static_cast<float>(size);
+    pass->LayeredFaces = true;
+
+    this->SetCamera(faces[0]);
+    vtkSmartPointer<vtkCamera> viewCamera = renderer->GetActiveCamera();
+    renderer->SetActiveCamera(this->LightCamera);
+    vtkOpenGLState::ScopedglClearColor clearColor(state);
+    state->vtkglClearColor(VTK_FLOAT_MAX, VTK_FLOAT_MAX, VTK_FLOAT_MAX, VTK_FLOAT_MAX);
+    ok = this->DrawProps(s, pass, size, size, true, false, true);
+    renderer->SetActiveCamera(viewCamera);
+    pass->LayeredFaces = false;
+  }
+  glFramebufferTexture(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, 0, 0);
+  glFramebufferTexture(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, 0, 0);
+  state->PopFramebufferBindings();
+  if (!complete)
+  {
+    vtkGenericWarningMacro("Layered cube-map framebuffer incomplete: no point-light shadows.");
+  }
   return ok;
 }
 
@@ -525,6 +607,18 @@ void vtkShadowMapManager::ReleaseGraphicsResources(vtkWindow* w)
     this->CubeDepth->ReleaseGraphicsResources(w);
     this->CubeDepth = nullptr;
   }
+  // Raw objects of the layered path: the window's context is current here.
+  if (this->LayeredFramebuffer)
+  {
+    glDeleteFramebuffers(1, &this->LayeredFramebuffer);
+    this->LayeredFramebuffer = 0;
+  }
+  if (this->LayeredDepth)
+  {
+    glDeleteTextures(1, &this->LayeredDepth);
+    this->LayeredDepth = 0;
+  }
+  this->LayeredContext = nullptr;
   if (this->DepthFramebuffer)
   {
     this->DepthFramebuffer->ReleaseGraphicsResources(w);

@@ -105,7 +105,9 @@ public:
 
   /**
    * Draw the squared distance to `faces`' common eye of every visible opaque
-   * prop into the six faces of `cube` (Gerasimov, section 12.3.3), six passes.
+   * prop into the six faces of `cube` (Gerasimov, section 12.3.3): in one
+   * layered pass when the pass asks for SinglePassCubeMaps, else one pass a
+   * face as in the paper.
    */
   bool RenderDistanceCube(const vtkRenderState* s, vtkSoftShadowPass* pass,
     const std::array<Frustum, 6>& faces, vtkTextureObject* cube);
@@ -155,6 +157,14 @@ private:
   vtkSmartPointer<vtkOpenGLCamera> LightCamera;
   vtkSmartPointer<vtkOpenGLFramebufferObject> DepthFramebuffer;
   vtkSmartPointer<vtkTextureObject> CubeDepth; ///< z-buffer while drawing cube faces
+  // Single-pass cube maps: a layered framebuffer and a depth cube map, in raw
+  // OpenGL (VTK 9.1 has neither).
+  bool DrawLayeredCube(const vtkRenderState* s, vtkSoftShadowPass* pass,
+    const std::array<Frustum, 6>& faces, vtkTextureObject* cube);
+  unsigned int LayeredFramebuffer = 0;
+  unsigned int LayeredDepth = 0;
+  int LayeredDepthSize = 0;
+  vtkOpenGLRenderWindow* LayeredContext = nullptr;
 };
 
 #endif

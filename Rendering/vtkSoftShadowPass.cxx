@@ -16,6 +16,7 @@
 #include "vtkShadowScreenBuffers.h"
 #include "vtkTextureObject.h"
 
+#include "vtkShadowCubeLayersGS.h"
 #include "vtkShadowCubeLookupFS.h"
 #include "vtkShadowNormalOffsetFS.h"
 #include "vtkSoftShadowReceiverFS.h"
@@ -256,8 +257,8 @@ std::string vtkSoftShadowPass::GetVisibilityExpression(int slot)
 //------------------------------------------------------------------------------
 // Receivers: tags are placed before the mapper writes its lighting code, and
 // filled after, once it is known whether the shader has lighting at all.
-bool vtkSoftShadowPass::PreReplaceShaderValues(
-  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+bool vtkSoftShadowPass::PreReplaceShaderValues(std::string&, std::string& geometryShader,
+  std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
 {
   switch (this->CurrentStage)
   {
@@ -267,6 +268,20 @@ bool vtkSoftShadowPass::PreReplaceShaderValues(
         "gl_FragData[0] = vec4(1.0);\n  return;\n  //VTK::Light::Impl", false);
       break;
     case Stage::LightDistance:
+      if (this->LayeredFaces)
+      {
+        if (geometryShader.empty())
+        {
+          geometryShader = vtkShadowCubeLayersGS;
+        }
+        else if (this->LayeredFallbackProps.insert(prop).second)
+        {
+          // Edges or wide lines already use the one geometry shader slot.
+          vtkWarningMacro("A prop drawn with its own geometry shader (edges or wide lines) casts "
+                          "into one cube face only with single-pass cube maps; turn "
+                          "SinglePassCubeMaps off for such scenes.");
+        }
+      }
       // Squared distance to the face's eye (the light) from the fragment's
       // window position: independent of the mapper's lighting varyings.
       vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Dec",
@@ -378,6 +393,10 @@ bool vtkSoftShadowPass::SetShaderParameters(
   {
     program->SetUniformMatrix4x4("vtkShadowFaceClipToView", this->FaceClipToView);
     program->SetUniformf("vtkShadowFaceSize", this->FaceSize);
+    if (this->LayeredFaces)
+    {
+      program->SetUniformMatrix4x4v("vtkShadowFaceFromFirst", 6, &this->FaceFromFirst[0][0]);
+    }
     return true;
   }
   if (this->CurrentStage != Stage::Receivers || !program->IsUniformUsed("vtkShadowViewToWorld"))
@@ -445,6 +464,7 @@ void vtkSoftShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ConstantBias: " << this->ConstantBias << "\n";
   os << indent << "NormalBias: " << this->NormalBias << "\n";
   os << indent << "DistanceBias: " << this->DistanceBias << "\n";
+  os << indent << "SinglePassCubeMaps: " << this->SinglePassCubeMaps << "\n";
   os << indent << "ShadowOnlyLight: " << this->ShadowOnlyLight << "\n";
   os << indent << "DelegatePass: ";
   if (this->DelegatePass)

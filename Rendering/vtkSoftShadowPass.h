@@ -39,6 +39,7 @@
 #include "vtkSoftShadowsRenderingModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
+#include <set>    // for std::set
 #include <string> // for std::string
 
 class vtkInformationDoubleKey;
@@ -104,6 +105,17 @@ public:
    */
   vtkSetClampMacro(DistanceBias, double, 0.5, 1.0);
   vtkGetMacro(DistanceBias, double);
+  ///@}
+
+  ///@{
+  /**
+   * Draw the six faces of a point light's cube map in one pass (layered
+   * rendering, a geometry shader sending each triangle to every face) rather
+   * than in six passes, one per face, as the paper does. Default on.
+   */
+  vtkSetMacro(SinglePassCubeMaps, bool);
+  vtkGetMacro(SinglePassCubeMaps, bool);
+  vtkBooleanMacro(SinglePassCubeMaps, bool);
   ///@}
 
   ///@{
@@ -219,6 +231,7 @@ protected:
   double ConstantBias = 4.0;
   double NormalBias = 1.0;
   double DistanceBias = 0.99;
+  bool SinglePassCubeMaps = true;
   int ShadowOnlyLight = -1;
   vtkRenderPass* DelegatePass = nullptr;
 
@@ -233,11 +246,14 @@ private:
   friend class vtkShadowScreenBuffers;
 
   Stage CurrentStage = Stage::Idle;
-  float FaceClipToView[16]; ///< LightDistance: the face's inverse projection
-  float FaceSize = 1.0f;    ///< LightDistance: the face's width in texels
+  float FaceClipToView[16];   ///< LightDistance: the face's inverse projection
+  float FaceSize = 1.0f;      ///< LightDistance: the face's width in texels
+  bool LayeredFaces = false;  ///< LightDistance: all six faces at once
+  float FaceFromFirst[6][16]; ///< LayeredFaces: face 0's clip space to face f's
   bool LinearMaps = false;
   vtkTimeStamp StageTime;
   bool PointLightReported = false;
+  std::set<vtkProp*> LayeredFallbackProps; ///< props already warned about, not owned
 };
 
 #endif

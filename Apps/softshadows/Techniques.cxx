@@ -157,7 +157,9 @@ std::string TechniqueSpec::ToString() const
 const std::vector<Technique>& Techniques()
 {
   static const std::vector<Technique> techniques = {
-    { "hard", "vtkHardShadowPass: one shadow map per light, percentage-closer filtering", {},
+    { "hard", "vtkHardShadowPass: one shadow map per light, percentage-closer filtering",
+      { { "layered", "point lights' cube maps drawn in one layered pass" },
+        { "sixpass", "point lights' cube maps drawn one face a pass, as in the paper" } },
       WithCommonParameters({
         Bind<vtkHardShadowPass, int>("pcf_radius", ValueType::Integer, Range::Between(0, 8),
           "radius in texels of the square PCF kernel: a (2r+1)^2-texel footprint; 0 is one tap",
@@ -166,7 +168,12 @@ const std::vector<Technique>& Techniques()
           "bilinear depth-comparison filtering of every tap; off gives binary taps",
           &vtkHardShadowPass::SetHardwareFiltering, &vtkHardShadowPass::GetHardwareFiltering),
       }),
-      [](const std::string&) { return Wrap(vtkSmartPointer<vtkHardShadowPass>::New()); } },
+      [](const std::string& variant)
+      {
+        auto pass = vtkSmartPointer<vtkHardShadowPass>::New();
+        pass->SetSinglePassCubeMaps(variant != "sixpass");
+        return Wrap(pass);
+      } },
     { "reference",
       "vtkReferenceShadowPass: ground truth, the average of many hard shadow maps drawn from "
       "points sampled over each light (slow)",

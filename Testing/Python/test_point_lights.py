@@ -14,17 +14,19 @@ views = [
      "view_up": [0, 1, 0], "view_angle": 100},
 ]
 walls_seen = np.zeros((6, 2), dtype=int)  # per wall: shadowed, lit pixels checked
-for camera in views:
+# Both ways of drawing the cube: one layered pass, and six passes.
+for camera, technique in [(v, t) for v in views for t in ("hard", "hard:sixpass")]:
     scene = st.room_scene(camera)
-    visibility, geometry = st.shadow_only(scene)
+    visibility, geometry = st.shadow_only(scene, technique)
     wall, points, hidden = st.room_expected(scene)
     umbra = st.interior(wall & hidden, 2)
     lit = st.interior(wall & ~hidden, 2)
     st.check(np.all(visibility[umbra] < 0.02),
-             "predicted shadows on the walls are dark (%d px, max %.3f)"
-             % (umbra.sum(), visibility[umbra].max()))
+             "%s: predicted shadows on the walls are dark (%d px, max %.3f)"
+             % (technique, umbra.sum(), visibility[umbra].max()))
     st.check(np.all(visibility[lit] > 0.98),
-             "predicted lit walls are lit (%d px, min %.3f)" % (lit.sum(), visibility[lit].min()))
+             "%s: predicted lit walls are lit (%d px, min %.3f)"
+             % (technique, lit.sum(), visibility[lit].min()))
     # Which wall each pixel shows: the axis and sign of its largest coordinate.
     axis = np.argmax(np.abs(points), axis=2)
     side = axis * 2 + (np.take_along_axis(points, axis[:, :, None], 2)[:, :, 0] < 0)
