@@ -175,7 +175,7 @@ bool vtkReferenceShadowPass::AccumulateSample(const vtkRenderState* s, int slot,
   vtkTextureObject* map = nullptr;
   if (light.Point)
   {
-    this->Maps->AllocateCubeMap(context, sample, this->MapSize);
+    this->Maps->AllocateCubeMap(context, sample, this->MapSize, this->PackedCubeMaps);
     map = sample.CubeMap;
     if (!this->Maps->RenderDistanceCube(s, this, this->Maps->CubeFaces(eye), map))
     {
@@ -210,6 +210,9 @@ bool vtkReferenceShadowPass::AccumulateSample(const vtkRenderState* s, int slot,
         program->SetUniformf("sampleTexel", 2.0f / static_cast<float>(this->MapSize));
         program->SetUniformf("sampleNormalBias", static_cast<float>(this->NormalBias));
         program->SetUniformf("sampleDistanceBias", static_cast<float>(this->DistanceBias));
+        const double far = this->Maps->CubeFaces(eye)[0].Far;
+        program->SetUniformf(
+          "sampleRange", this->PackedCubeMaps ? static_cast<float>(far * far) : 0.0f);
         program->SetUniformf("sampleWeight", weight);
       });
   }

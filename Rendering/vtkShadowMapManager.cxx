@@ -320,10 +320,12 @@ bool vtkShadowMapManager::RenderCameraDepth(
 }
 
 //------------------------------------------------------------------------------
-void vtkShadowMapManager::AllocateCubeMap(vtkOpenGLRenderWindow* context, Light& light, int size)
+void vtkShadowMapManager::AllocateCubeMap(
+  vtkOpenGLRenderWindow* context, Light& light, int size, bool packed)
 {
   vtkTextureObject* cube = light.CubeMap;
-  if (cube && cube->GetContext() == context && static_cast<int>(cube->GetWidth()) == size)
+  if (cube && cube->GetContext() == context && static_cast<int>(cube->GetWidth()) == size &&
+    (cube->GetComponents() == 4) == packed)
   {
     return;
   }
@@ -335,7 +337,14 @@ void vtkShadowMapManager::AllocateCubeMap(vtkOpenGLRenderWindow* context, Light&
   cube->SetWrapS(vtkTextureObject::ClampToEdge);
   cube->SetWrapT(vtkTextureObject::ClampToEdge);
   cube->SetWrapR(vtkTextureObject::ClampToEdge);
-  cube->CreateCubeFromRaw(size, size, 1, VTK_FLOAT, nullptr);
+  if (packed)
+  {
+    cube->CreateCubeFromRaw(size, size, 4, VTK_UNSIGNED_CHAR, nullptr);
+  }
+  else
+  {
+    cube->CreateCubeFromRaw(size, size, 1, VTK_FLOAT, nullptr);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -374,14 +383,17 @@ bool vtkShadowMapManager::RenderDistanceCube(const vtkRenderState* s, vtkSoftSha
     const glm::mat4 clipToView(glm::inverse(faces[f].Projection));
     std::copy(glm::value_ptr(clipToView), glm::value_ptr(clipToView) + 16, pass->FaceClipToView);
     pass->FaceSize = static_cast<float>(size);
+    pass->FaceRange =
+      pass->GetPackedCubeMaps() ? static_cast<float>(faces[f].Far * faces[f].Far) : 0.0f;
 
     this->DepthFramebuffer->Bind();
     this->DepthFramebuffer->AddColorAttachment(0, cube, 0, GL_TEXTURE_CUBE_MAP_POSITIVE_X + f);
     this->DepthFramebuffer->AddDepthAttachment(this->CubeDepth);
     this->DepthFramebuffer->ActivateDrawBuffers(1);
-    // Nothing drawn is infinitely far: lit.
+    // Nothing drawn is infinitely far (packed: the largest value): lit.
     vtkOpenGLState::ScopedglClearColor clearColor(state);
-    state->vtkglClearColor(VTK_FLOAT_MAX, VTK_FLOAT_MAX, VTK_FLOAT_MAX, VTK_FLOAT_MAX);
+    const float far = pass->GetPackedCubeMaps() ? 1.0f : VTK_FLOAT_MAX;
+    state->vtkglClearColor(far, far, far, far);
     ok = this->DrawProps(s, pass, size, size, true, false, true);
     this->DepthFramebuffer->RemoveColorAttachment(0);
     this->DepthFramebuffer->RemoveDepthAttachment();
@@ -447,13 +459,16 @@ bool vtkShadowMapManager::DrawLayeredCube(const vtkRenderState* s, vtkSoftShadow
     const glm::mat4 clipToView(glm::inverse(faces[0].Projection));
     std::copy(glm::value_ptr(clipToView), glm::value_ptr(clipToView) + 16, pass->FaceClipToView);
     pass->FaceSize = static_cast<float>(size);
+    pass->FaceRange =
+      pass->GetPackedCubeMaps() ? static_cast<float>(faces[0].Far * faces[0].Far) : 0.0f;
     pass->LayeredFaces = true;
 
     this->SetCamera(faces[0]);
     vtkSmartPointer<vtkCamera> viewCamera = renderer->GetActiveCamera();
     renderer->SetActiveCamera(this->LightCamera);
     vtkOpenGLState::ScopedglClearColor clearColor(state);
-    state->vtkglClearColor(VTK_FLOAT_MAX, VTK_FLOAT_MAX, VTK_FLOAT_MAX, VTK_FLOAT_MAX);
+    const float far = pass->GetPackedCubeMaps() ? 1.0f : VTK_FLOAT_MAX;
+    state->vtkglClearColor(far, far, far, far);
     ok = this->DrawProps(s, pass, size, size, true, false, true);
     renderer->SetActiveCamera(viewCamera);
     pass->LayeredFaces = false;

@@ -98,10 +98,10 @@ public:
   std::array<Frustum, 6> CubeFaces(const glm::dvec3& eye) const;
 
   /**
-   * Make sure `light.CubeMap` is a `size`^2 single-channel float cube map
-   * (nearest filtering: it holds distances, not colours).
+   * Make sure `light.CubeMap` is a `size`^2 cube map, single-channel float or
+   * (`packed`) RGBA8; nearest filtering: it holds distances, not colours.
    */
-  void AllocateCubeMap(vtkOpenGLRenderWindow* context, Light& light, int size);
+  void AllocateCubeMap(vtkOpenGLRenderWindow* context, Light& light, int size, bool packed);
 
   /**
    * Draw the squared distance to `faces`' common eye of every visible opaque

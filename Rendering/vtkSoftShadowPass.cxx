@@ -215,7 +215,7 @@ bool vtkSoftShadowPass::RenderLightDepthMaps(const vtkRenderState* s, bool linea
   {
     if (light.Point)
     {
-      this->Maps->AllocateCubeMap(context, light, this->MapSize);
+      this->Maps->AllocateCubeMap(context, light, this->MapSize, this->PackedCubeMaps);
       if (!this->Maps->RenderDistanceCube(s, this, light.Faces, light.CubeMap))
       {
         return false;
@@ -240,7 +240,8 @@ std::string vtkSoftShadowPass::GetVisibilityExpression(int slot)
   const std::string hard = light.Point
     ? "vtkShadowCubeLookup(vtkShadowCube[" + m + "], vtkShadowCubeCenter[" + m +
       "], vtkShadowPositionWC, vtkShadowNormalWC, vtkShadowCubeTexel, vtkShadowNormalBias, "
-      "vtkShadowDistanceBias, vtkShadowPCFRadius)"
+      "vtkShadowDistanceBias, vtkShadowCubeRange[" +
+      m + "], vtkShadowPCFRadius)"
     : "vtkShadowLookup(vtkShadowMap[" + m + "], vtkShadowWorldToMap[" + i +
       "], vtkShadowReceiver(" + i + ", vtkShadowPositionWC, vtkShadowNormalWC), " +
       "vtkShadowPCFRadius)";
@@ -284,16 +285,21 @@ bool vtkSoftShadowPass::PreReplaceShaderValues(std::string&, std::string& geomet
       }
       // Squared distance to the face's eye (the light) from the fragment's
       // window position: independent of the mapper's lighting varyings.
+      // Packed into RGBA8 over the face's far distance squared when asked.
       vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Dec",
-        "uniform mat4 vtkShadowFaceClipToView;\nuniform float vtkShadowFaceSize;\n"
-        "//VTK::Light::Dec",
+        std::string(vtkShadowCubeLookupFS) +
+          "\nuniform mat4 vtkShadowFaceClipToView;\nuniform float vtkShadowFaceSize;\n"
+          "uniform float vtkShadowFaceRange;\n//VTK::Light::Dec",
         false);
       vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Impl",
         "vec4 vtkShadowFaceView = vtkShadowFaceClipToView *\n"
         "    vec4(gl_FragCoord.xy / vtkShadowFaceSize * 2.0 - 1.0, gl_FragCoord.z * 2.0 - 1.0, "
         "1.0);\n"
         "  vtkShadowFaceView.xyz /= vtkShadowFaceView.w;\n"
-        "  gl_FragData[0] = vec4(dot(vtkShadowFaceView.xyz, vtkShadowFaceView.xyz));\n"
+        "  float vtkShadowDistance2 = dot(vtkShadowFaceView.xyz, vtkShadowFaceView.xyz);\n"
+        "  gl_FragData[0] = vtkShadowFaceRange > 0.0\n"
+        "    ? vtkShadowPackDistance(min(vtkShadowDistance2 / vtkShadowFaceRange, 0.9999))\n"
+        "    : vec4(vtkShadowDistance2);\n"
         "  return;\n  //VTK::Light::Impl",
         false);
       break;
@@ -393,6 +399,7 @@ bool vtkSoftShadowPass::SetShaderParameters(
   {
     program->SetUniformMatrix4x4("vtkShadowFaceClipToView", this->FaceClipToView);
     program->SetUniformf("vtkShadowFaceSize", this->FaceSize);
+    program->SetUniformf("vtkShadowFaceRange", this->FaceRange);
     if (this->LayeredFaces)
     {
       program->SetUniformMatrix4x4v("vtkShadowFaceFromFirst", 6, &this->FaceFromFirst[0][0]);
@@ -428,6 +435,8 @@ bool vtkSoftShadowPass::SetShaderParameters(
       const float center[3] = { static_cast<float>(light.Position.x),
         static_cast<float>(light.Position.y), static_cast<float>(light.Position.z) };
       program->SetUniform3f(Indexed("vtkShadowCubeCenter", light.MapIndex).c_str(), center);
+      program->SetUniformf(Indexed("vtkShadowCubeRange", light.MapIndex).c_str(),
+        this->PackedCubeMaps ? static_cast<float>(light.Faces[0].Far * light.Faces[0].Far) : 0.0f);
       continue;
     }
     vtkShadowMapManager::SetFrustumUniforms(
@@ -465,6 +474,7 @@ void vtkSoftShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NormalBias: " << this->NormalBias << "\n";
   os << indent << "DistanceBias: " << this->DistanceBias << "\n";
   os << indent << "SinglePassCubeMaps: " << this->SinglePassCubeMaps << "\n";
+  os << indent << "PackedCubeMaps: " << this->PackedCubeMaps << "\n";
   os << indent << "ShadowOnlyLight: " << this->ShadowOnlyLight << "\n";
   os << indent << "DelegatePass: ";
   if (this->DelegatePass)

@@ -120,6 +120,17 @@ public:
 
   ///@{
   /**
+   * Store point lights' squared distances packed into RGBA8 cube maps (the
+   * paper's integer variant, section 12.2.3, for contexts without float
+   * render targets) instead of single-channel float ones. Default off.
+   */
+  vtkSetMacro(PackedCubeMaps, bool);
+  vtkGetMacro(PackedCubeMaps, bool);
+  vtkBooleanMacro(PackedCubeMaps, bool);
+  ///@}
+
+  ///@{
+  /**
    * When >= 0, draw the visibility of this light (index in the renderer's
    * light collection) instead of the shaded colour. Default -1 (off).
    */
@@ -232,6 +243,7 @@ protected:
   double NormalBias = 1.0;
   double DistanceBias = 0.99;
   bool SinglePassCubeMaps = true;
+  bool PackedCubeMaps = false;
   int ShadowOnlyLight = -1;
   vtkRenderPass* DelegatePass = nullptr;
 
@@ -248,6 +260,7 @@ private:
   Stage CurrentStage = Stage::Idle;
   float FaceClipToView[16];   ///< LightDistance: the face's inverse projection
   float FaceSize = 1.0f;      ///< LightDistance: the face's width in texels
+  float FaceRange = 0.0f;     ///< LightDistance: 0, or the packing range (far^2)
   bool LayeredFaces = false;  ///< LightDistance: all six faces at once
   float FaceFromFirst[6][16]; ///< LayeredFaces: face 0's clip space to face f's
   bool LinearMaps = false;

@@ -60,6 +60,13 @@ std::vector<TechniqueParameter> WithCommonParameters(std::vector<TechniqueParame
     Bind<vtkSoftShadowPass, double>("normal_bias", ValueType::Number, Range::Between(0.0, 16.0),
       "receiver offset along the surface normal, towards the light, in shadow-map texels",
       &vtkSoftShadowPass::SetNormalBias, &vtkSoftShadowPass::GetNormalBias));
+  own.push_back(
+    Bind<vtkSoftShadowPass, double>("distance_bias", ValueType::Number, Range::Between(0.5, 1.0),
+      "point lights: factor on squared distances before comparing with the cube map",
+      &vtkSoftShadowPass::SetDistanceBias, &vtkSoftShadowPass::GetDistanceBias));
+  own.push_back(Bind<vtkSoftShadowPass, bool>("packed_cube_maps", ValueType::Boolean, Range::Any(),
+    "point lights: RGBA8 cube maps packing squared distances, not float ones",
+    &vtkSoftShadowPass::SetPackedCubeMaps, &vtkSoftShadowPass::GetPackedCubeMaps));
   return own;
 }
 

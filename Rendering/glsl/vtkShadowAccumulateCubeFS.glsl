@@ -6,6 +6,7 @@ uniform vec3 sampleEye;
 uniform float sampleTexel;
 uniform float sampleNormalBias;
 uniform float sampleDistanceBias;
+uniform float sampleRange;
 uniform float sampleWeight;
 
 void main()
@@ -18,6 +19,6 @@ void main()
   vec3 position = vtkScreenPositionWC(texCoord, depth);
   vec3 normal = vtkScreenNormalWC(depth, position);
   float lit = vtkShadowCubeLookup(sampleCube, sampleEye, vec4(position, 1.0), normal, sampleTexel,
-    sampleNormalBias, sampleDistanceBias, 0);
+    sampleNormalBias, sampleDistanceBias, sampleRange, 0);
   gl_FragData[0] = vec4(lit * sampleWeight);
 }

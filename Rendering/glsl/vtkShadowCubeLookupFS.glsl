@@ -1,36 +1,65 @@
 // Point lights (Gerasimov, GPU Gems ch. 12): visibility from a cube map of
 // squared distances to the light, looked up with the light-to-fragment
-// direction. Shared by receivers and screen-space passes.
+// direction. Shared by receivers, screen-space passes and techniques.
 //
-// texel: a cube texel's world size per unit of distance (2 / size);
-// normalBias: the normal offset in texels; distanceBias: the multiplicative
-// bias on squared distances; radius: 0 for one tap, else 4-tap PCF with the
-// taps `radius` texels apart.
-float vtkShadowCubeLookup(samplerCube cube, vec3 center, vec4 positionWC, vec3 normalWC,
-  float texel, float normalBias, float distanceBias, int radius)
+// range: 0 for a float cube map; else the map is RGBA8, each texel packing
+// the squared distance over `range` (section 12.3.3, method 1).
+
+vec4 vtkShadowPackDistance(float v)
+{
+  vec4 bytes = fract(v * vec4(1.0, 255.0, 65025.0, 16581375.0));
+  return bytes - bytes.yzww * vec4(1.0 / 255.0, 1.0 / 255.0, 1.0 / 255.0, 0.0);
+}
+
+float vtkShadowCubeStored(samplerCube cube, vec3 direction, float range)
+{
+  vec4 texel = texture(cube, direction);
+  return range > 0.0
+    ? dot(texel, vec4(1.0, 1.0 / 255.0, 1.0 / 65025.0, 1.0 / 16581375.0)) * range
+    : texel.r;
+}
+
+// The direction to look up for a point, moved `normalBias` texels along its
+// normal towards the light; `size` returns a texel's world size there
+// (texel: a texel's size per unit of distance, 2 / map size).
+vec3 vtkShadowCubeDirection(vec3 center, vec4 positionWC, vec3 normalWC, float texel,
+  float normalBias, out float size)
 {
   vec3 toPoint = positionWC.xyz - center;
-  // Normal offset, towards the light.
   vec3 n = dot(normalWC, toPoint) > 0.0 ? -normalWC : normalWC;
-  float axis = max(abs(toPoint.x), max(abs(toPoint.y), abs(toPoint.z)));
-  float size = texel * axis;
-  vec3 d = toPoint + n * (size * normalBias);
-  // Section 12.3.7: the multiplicative bias "works best in practice".
+  size = texel * max(abs(toPoint.x), max(abs(toPoint.y), abs(toPoint.z)));
+  return toPoint + n * (size * normalBias);
+}
+
+// Two unit vectors across `d`, for filter taps.
+void vtkShadowCubeBasis(vec3 d, out vec3 u, out vec3 v)
+{
+  vec3 w = normalize(d);
+  u = normalize(cross(w, abs(w.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0)));
+  v = cross(w, u);
+}
+
+// One tap, or (radius > 0) section 12.4's 4-tap PCF with the taps `radius`
+// texels apart. distanceBias multiplies the squared distance (12.3.7: "works
+// best in practice").
+float vtkShadowCubeLookup(samplerCube cube, vec3 center, vec4 positionWC, vec3 normalWC,
+  float texel, float normalBias, float distanceBias, float range, int radius)
+{
+  float size;
+  vec3 d = vtkShadowCubeDirection(center, positionWC, normalWC, texel, normalBias, size);
   float reference = dot(d, d) * distanceBias;
   if (radius == 0)
   {
-    return reference <= texture(cube, d).r ? 1.0 : 0.0;
+    return reference <= vtkShadowCubeStored(cube, d, range) ? 1.0 : 0.0;
   }
-  // Section 12.4: 4-tap PCF across the direction.
-  vec3 u = normalize(cross(d, abs(d.x) < 0.9 * length(d) ? vec3(1.0, 0.0, 0.0)
-                                                          : vec3(0.0, 1.0, 0.0)));
-  vec3 v = cross(normalize(d), u);
+  vec3 u, v;
+  vtkShadowCubeBasis(d, u, v);
   float step = 0.5 * float(radius) * size;
   float lit = 0.0;
   for (int i = 0; i < 4; ++i)
   {
     vec2 o = vec2((i & 1) == 0 ? -1.0 : 1.0, (i & 2) == 0 ? -1.0 : 1.0) * step;
-    lit += reference <= texture(cube, d + o.x * u + o.y * v).r ? 0.25 : 0.0;
+    lit += reference <= vtkShadowCubeStored(cube, d + o.x * u + o.y * v, range) ? 0.25 : 0.0;
   }
   return lit;
 }

@@ -65,6 +65,7 @@ float vtkShadowLookup(sampler2DShadow map, mat4 worldToMap, vec4 positionWC, int
 // Point lights: cube maps of squared distances (vtkShadowCubeLookupFS.glsl).
 uniform samplerCube vtkShadowCube[VTK_SHADOW_CUBES];
 uniform vec3 vtkShadowCubeCenter[VTK_SHADOW_CUBES];
+uniform float vtkShadowCubeRange[VTK_SHADOW_CUBES]; // 0: float map; else RGBA8 range
 uniform float vtkShadowCubeTexel;   // a texel's world size per unit of distance
 uniform float vtkShadowDistanceBias; // multiplicative, on squared distances
 #endif

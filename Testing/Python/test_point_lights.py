@@ -14,10 +14,14 @@ views = [
      "view_up": [0, 1, 0], "view_angle": 100},
 ]
 walls_seen = np.zeros((6, 2), dtype=int)  # per wall: shadowed, lit pixels checked
-# Both ways of drawing the cube: one layered pass, and six passes.
-for camera, technique in [(v, t) for v in views for t in ("hard", "hard:sixpass")]:
+# Both ways of drawing the cube, one layered pass and six passes, and the
+# paper's RGBA8-packed distances.
+for camera, technique, packed in [(v, t, p) for v in views for t, p in
+                                  (("hard", False), ("hard:sixpass", False), ("hard", True))]:
     scene = st.room_scene(camera)
+    scene["shadows"]["hard"] = {"packed_cube_maps": packed}
     visibility, geometry = st.shadow_only(scene, technique)
+    technique += " packed" if packed else ""
     wall, points, hidden = st.room_expected(scene)
     umbra = st.interior(wall & hidden, 2)
     lit = st.interior(wall & ~hidden, 2)
