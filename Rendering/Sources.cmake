@@ -3,6 +3,7 @@
 set(softshadows_rendering_classes
   vtkContactHardeningShadowPass
   vtkHardShadowPass
+  vtkOmnidirectionalShadowPass
   vtkReferenceShadowPass
   vtkSoftShadowPass)
 
@@ -20,6 +21,7 @@ set(softshadows_rendering_shaders
   vtkContactPCFFS
   vtkContactPrepareFS
   vtkContactResolveFS
+  vtkOmniPoissonFS
   vtkShadowAccumulateCubeFS
   vtkShadowAccumulateFS
   vtkShadowCubeLayersGS

@@ -2,6 +2,7 @@
 
 #include "vtkContactHardeningShadowPass.h"
 #include "vtkHardShadowPass.h"
+#include "vtkOmnidirectionalShadowPass.h"
 #include "vtkReferenceShadowPass.h"
 #include "vtkSoftShadowPass.h"
 
@@ -268,6 +269,40 @@ const std::vector<Technique>& Techniques()
         else
         {
           pass->SetVariantToMultiPass();
+        }
+        return Wrap(pass);
+      } },
+    { "omni",
+      "vtkOmnidirectionalShadowPass: point lights' cube maps of squared distances (Gerasimov, "
+      "GPU Gems ch. 12), filtered; spot and directional lights as hard with 4-tap PCF",
+      { { "poisson", "blocker search and rotated Poisson-disk PCF sized by the light's radius" },
+        { "pcf4", "the chapter's 4-tap PCF" }, { "hard", "one tap" } },
+      WithCommonParameters({
+        Bind<vtkOmnidirectionalShadowPass, int>("pcf_radius", ValueType::Integer,
+          Range::Between(1, 8), "pcf4: distance between the taps, in texels",
+          &vtkOmnidirectionalShadowPass::SetPCFRadius, &vtkOmnidirectionalShadowPass::GetPCFRadius),
+        Bind<vtkOmnidirectionalShadowPass, int>("taps", ValueType::Integer, Range::Between(1, 32),
+          "poisson: taps of the blocker search and of the filter",
+          &vtkOmnidirectionalShadowPass::SetPoissonTaps,
+          &vtkOmnidirectionalShadowPass::GetPoissonTaps),
+        Bind<vtkSoftShadowPass, bool>("single_pass_cube_maps", ValueType::Boolean, Range::Any(),
+          "draw the six cube faces in one layered pass (else six passes, as the paper)",
+          &vtkSoftShadowPass::SetSinglePassCubeMaps, &vtkSoftShadowPass::GetSinglePassCubeMaps),
+      }),
+      [](const std::string& variant)
+      {
+        auto pass = vtkSmartPointer<vtkOmnidirectionalShadowPass>::New();
+        if (variant == "pcf4")
+        {
+          pass->SetFilterToPCF4();
+        }
+        else if (variant == "hard")
+        {
+          pass->SetFilterToHard();
+        }
+        else
+        {
+          pass->SetFilterToPoisson();
         }
         return Wrap(pass);
       } },

@@ -1,13 +1,15 @@
 // Two point lights and a spot light together (Gerasimov, GPU Gems ch. 12):
 // a post on the ground casts one shadow from each, each light's shadow-only
 // output is dark exactly behind the post from that light and lit where only
-// the other lights are hidden.
+// the other lights are hidden. Run with `hard` (default) or `omni`: the
+// omnidirectional technique with lights of radius 0.1 and its Poisson filter.
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCubeSource.h"
 #include "vtkHardShadowPass.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
+#include "vtkOmnidirectionalShadowPass.h"
 #include "vtkPlaneSource.h"
 #include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
@@ -17,6 +19,7 @@
 #include "ShadowTestScene.h"
 
 #include <cmath>
+#include <cstring>
 #include <iostream>
 
 namespace
@@ -33,7 +36,7 @@ double VisibilityAt(vtkRenderer* renderer, vtkRenderWindow* window, const double
   return rgb->GetValue(0) / 255.0;
 }
 
-vtkLight* AddLight(vtkRenderer* renderer, double x, double y, double z, double cone)
+vtkLight* AddLight(vtkRenderer* renderer, double x, double y, double z, double cone, double radius)
 {
   vtkNew<vtkLight> light;
   light->SetLightTypeToSceneLight();
@@ -42,6 +45,7 @@ vtkLight* AddLight(vtkRenderer* renderer, double x, double y, double z, double c
   light->SetFocalPoint(0, 0, 0);
   light->SetConeAngle(cone);
   light->SetIntensity(0.5);
+  vtkSoftShadowPass::SetRadius(radius, light);
   renderer->AddLight(light);
   return light;
 }
@@ -64,9 +68,11 @@ int TestPointLightShadows(int argc, char* argv[])
   post->SetZLength(0.4);
   ShadowTestScene::AddActor(renderer, post, blue);
 
-  AddLight(renderer, 2.0, 1.5, 0.0, 180.0);  // point: shadow towards -x
-  AddLight(renderer, 0.0, 1.5, 2.0, 180.0);  // point: shadow towards -z
-  AddLight(renderer, -3.0, 3.0, -3.0, 40.0); // spot: shadow towards +x +z
+  const bool omni = argc > 1 && std::strcmp(argv[1], "omni") == 0;
+  const double radius = omni ? 0.1 : 0.0;
+  AddLight(renderer, 2.0, 1.5, 0.0, 180.0, radius);  // point: shadow towards -x
+  AddLight(renderer, 0.0, 1.5, 2.0, 180.0, radius);  // point: shadow towards -z
+  AddLight(renderer, -3.0, 3.0, -3.0, 40.0, radius); // spot: shadow towards +x +z
 
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetPosition(3, 6, 4);
@@ -76,7 +82,15 @@ int TestPointLightShadows(int argc, char* argv[])
   renderer->ResetCameraClippingRange();
   renderer->SetBackground(0.1, 0.1, 0.12);
 
-  vtkNew<vtkHardShadowPass> pass;
+  vtkSmartPointer<vtkSoftShadowPass> pass;
+  if (omni)
+  {
+    pass = vtkSmartPointer<vtkOmnidirectionalShadowPass>::New();
+  }
+  else
+  {
+    pass = vtkSmartPointer<vtkHardShadowPass>::New();
+  }
   pass->SetMapSize(512);
   renderer->SetPass(pass);
   vtkNew<vtkRenderWindow> window;

@@ -27,7 +27,7 @@ CAMERA = {"position": [0.0, 6.0, 6.0], "focal_point": [0.0, 0.0, 0.0],
 
 
 def ball_scene(height=1.0, light_radius=0.0, technique="hard", params=None,
-               size=(240, 180), map_size=1024):
+               size=(240, 180), map_size=1024, light_type="spot"):
     shadows = {"technique": technique, "map_size": map_size}
     if params:
         shadows[technique.split(":")[0]] = params
@@ -37,7 +37,8 @@ def ball_scene(height=1.0, light_radius=0.0, technique="hard", params=None,
         "camera": CAMERA,
         "lights": [{"type": "spot", "position": LIGHT.tolist(),
                     "focal_point": [0, 0, 0], "cone_angle": 45,
-                    "radius": light_radius}],
+                    "radius": light_radius} if light_type == "spot" else
+                   {"type": "point", "position": LIGHT.tolist(), "radius": light_radius}],
         "actors": [
             {"source": "plane",
              "params": {"size": [2 * GROUND_HALF, 2 * GROUND_HALF], "resolution": 8}},
@@ -206,8 +207,11 @@ def quality_mask(scene):
     to_light /= np.linalg.norm(to_light, axis=2, keepdims=True)
     n_dot_l = np.sum(normal * to_light, axis=2)
     axis = np.array([0.0, -1.0, 0.0])
-    cone = scene["lights"][0]["cone_angle"]
-    inside = np.sum(-to_light * axis, axis=2) >= math.cos(math.radians(0.9 * cone))
+    if scene["lights"][0]["type"] == "spot":
+        cone = scene["lights"][0]["cone_angle"]
+        inside = np.sum(-to_light * axis, axis=2) >= math.cos(math.radians(0.9 * cone))
+    else:
+        inside = np.ones_like(n_dot_l, dtype=bool)
     same = np.ones_like(ids, dtype=bool)
     for dy, dx in ((0, 1), (0, -1), (1, 0), (-1, 0)):
         same &= np.roll(np.roll(ids, dy, axis=0), dx, axis=1) == ids

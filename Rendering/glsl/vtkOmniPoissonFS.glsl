@@ -1,0 +1,53 @@
+// Technique `omni`, Poisson filter: soft shadows of a spherical light of
+// radius R from a cube map of squared distances. A blocker search over the
+// light's extent gives the mean blocker distance b; the penumbra at a
+// receiver at distance d then spans w = R (d - b) / b on each side
+// (w_penumbra = (d_receiver - d_blocker) w_light / d_blocker), and a
+// percentage-closer filter over Poisson taps of that radius, rotated per
+// pixel against banding, gives the visibility.
+uniform vec2 omniPoisson[32]; // a Poisson disk in the unit disc
+uniform int omniTaps;
+uniform float omniLightRadius[VTK_SHADOW_CUBES];
+
+float vtkOmniPoissonLookup(samplerCube cube, vec3 center, vec4 positionWC, vec3 normalWC,
+  float range, float radius)
+{
+  float size;
+  vec3 d = vtkShadowCubeDirection(
+    center, positionWC, normalWC, vtkShadowCubeTexel, vtkShadowNormalBias, size);
+  float receiver = length(d);
+  float reference = dot(d, d) * vtkShadowDistanceBias;
+  vec3 u, v;
+  vtkShadowCubeBasis(d, u, v);
+  float angle = 6.2831853 * fract(sin(dot(gl_FragCoord.xy, vec2(12.9898, 78.233))) * 43758.5453);
+  mat2 rotation = mat2(cos(angle), sin(angle), -sin(angle), cos(angle));
+
+  // Blocker search: offsets up to 2R at the receiver see blockers down to a
+  // third of the way from the light.
+  float blockers = 0.0;
+  float count = 0.0;
+  for (int i = 0; i < omniTaps; ++i)
+  {
+    vec2 o = rotation * omniPoisson[i] * (2.0 * radius);
+    float stored = vtkShadowCubeStored(cube, d + o.x * u + o.y * v, range);
+    if (stored < reference)
+    {
+      blockers += sqrt(stored);
+      count += 1.0;
+    }
+  }
+  if (count == 0.0)
+  {
+    return 1.0;
+  }
+  float blocker = blockers / count;
+  float width = max(radius * (receiver - blocker) / max(blocker, 1e-6), size);
+
+  float lit = 0.0;
+  for (int i = 0; i < omniTaps; ++i)
+  {
+    vec2 o = rotation * omniPoisson[i] * width;
+    lit += reference <= vtkShadowCubeStored(cube, d + o.x * u + o.y * v, range) ? 1.0 : 0.0;
+  }
+  return lit / float(omniTaps);
+}

@@ -1,0 +1,125 @@
+#include "vtkOmnidirectionalShadowPass.h"
+
+#include "vtkObjectFactory.h"
+#include "vtkShaderProgram.h"
+#include "vtkShadowMapManager.h"
+
+#include "vtkOmniPoissonFS.h"
+
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+
+#include <algorithm>
+#include <random>
+#include <vector>
+
+namespace
+{
+// 32 points of a Poisson disk in the unit disc, by dart throwing from a fixed
+// seed with a shrinking spacing; any prefix is well spread.
+std::vector<float> PoissonDisc()
+{
+  std::vector<glm::vec2> points;
+  std::mt19937 generator(11);
+  auto uniform = [&generator]() { return (generator() >> 8) * (2.0f / 16777216.0f) - 1.0f; };
+  float spacing = 0.5f;
+  int misses = 0;
+  while (points.size() < 32)
+  {
+    const glm::vec2 candidate(uniform(), uniform());
+    bool free = glm::length(candidate) <= 1.0f;
+    for (const auto& p : points)
+    {
+      free = free && glm::distance(p, candidate) >= spacing;
+    }
+    if (free)
+    {
+      points.push_back(candidate);
+      misses = 0;
+    }
+    else if (++misses > 2000)
+    {
+      spacing *= 0.9f;
+      misses = 0;
+    }
+  }
+  std::vector<float> flat;
+  for (const auto& p : points)
+  {
+    flat.insert(flat.end(), { p.x, p.y });
+  }
+  return flat;
+}
+}
+
+vtkStandardNewMacro(vtkOmnidirectionalShadowPass);
+
+vtkOmnidirectionalShadowPass::vtkOmnidirectionalShadowPass() = default;
+vtkOmnidirectionalShadowPass::~vtkOmnidirectionalShadowPass() = default;
+
+//------------------------------------------------------------------------------
+bool vtkOmnidirectionalShadowPass::RenderShadowMaps(const vtkRenderState* s)
+{
+  // Bilinear 2D maps for spot and directional lights; cube maps are nearest.
+  return this->RenderLightDepthMaps(s, true);
+}
+
+//------------------------------------------------------------------------------
+int vtkOmnidirectionalShadowPass::GetPCFRadius() const
+{
+  // The framework's lookups: 4-tap PCF of 2D maps, and PCF4's cube spacing.
+  return this->Filter == Hard ? 0 : this->PCFRadius;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkOmnidirectionalShadowPass::GetVisibilityDeclarations()
+{
+  const auto& lights = this->Maps->GetLights();
+  const bool cubes = std::any_of(
+    lights.begin(), lights.end(), [](const vtkShadowMapManager::Light& l) { return l.Point; });
+  return cubes && this->Filter == Poisson ? vtkOmniPoissonFS : "";
+}
+
+//------------------------------------------------------------------------------
+std::string vtkOmnidirectionalShadowPass::GetVisibilityExpression(int slot)
+{
+  const auto& light = this->Maps->GetLights()[slot];
+  if (!light.Point || this->Filter != Poisson)
+  {
+    return this->Superclass::GetVisibilityExpression(slot);
+  }
+  const std::string m = std::to_string(light.MapIndex);
+  return "vtkOmniPoissonLookup(vtkShadowCube[" + m + "], vtkShadowCubeCenter[" + m +
+    "], vtkShadowPositionWC, vtkShadowNormalWC, vtkShadowCubeRange[" + m + "], omniLightRadius[" +
+    m + "])";
+}
+
+//------------------------------------------------------------------------------
+void vtkOmnidirectionalShadowPass::SetVisibilityUniforms(vtkShaderProgram* program)
+{
+  if (this->Filter != Poisson || !program->IsUniformUsed("omniTaps"))
+  {
+    return;
+  }
+  static const std::vector<float> disc = PoissonDisc();
+  program->SetUniform2fv("omniPoisson", 32, disc.data());
+  program->SetUniformi("omniTaps", this->PoissonTaps);
+  for (const auto& light : this->Maps->GetLights())
+  {
+    if (light.Point)
+    {
+      const std::string name = "omniLightRadius[" + std::to_string(light.MapIndex) + "]";
+      program->SetUniformf(name.c_str(), static_cast<float>(light.Radius));
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOmnidirectionalShadowPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  static const char* names[] = { "Hard", "PCF4", "Poisson" };
+  os << indent << "Filter: " << names[this->Filter] << "\n";
+  os << indent << "PCFRadius: " << this->PCFRadius << "\n";
+  os << indent << "PoissonTaps: " << this->PoissonTaps << "\n";
+}
