@@ -21,6 +21,7 @@
 #include "vtkContactPCFFS.h"
 #include "vtkContactPrepareFS.h"
 #include "vtkContactResolveFS.h"
+#include "vtkShadowCubeLookupFS.h"
 #include "vtkShadowNormalOffsetFS.h"
 
 #include <glm/geometric.hpp>
@@ -87,7 +88,8 @@ vtkSmartPointer<vtkTextureObject> FloatTexture(vtkOpenGLRenderWindow* context, i
 class vtkContactHardeningShadowPass::vtkInternals
 {
 public:
-  std::unique_ptr<vtkOpenGLQuadHelper> Distance, Prepare, MultiPass, PCF, Gaussian, Resolve;
+  std::unique_ptr<vtkOpenGLQuadHelper> Distance, DistanceCube, Prepare, MultiPass, PCF, Gaussian,
+    Resolve;
   // Contact maps: [0] pass 2's output, [1] and [2] the ping-pong pair.
   std::array<vtkSmartPointer<vtkTextureObject>, 3> Maps;
   // Depth used as a pixel mask: 0 where blurs work (see the prepare pass).
@@ -217,7 +219,8 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
     glSamplerParameteri(in.RawDepthSampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   }
 
-  const std::string common = std::string(vtkShadowNormalOffsetFS) + "\n" + vtkContactCommonFS;
+  const std::string common =
+    std::string(vtkShadowNormalOffsetFS) + "\n" + vtkShadowCubeLookupFS + "\n" + vtkContactCommonFS;
   auto build = [&](std::unique_ptr<vtkOpenGLQuadHelper>& quad, const char* source)
   {
     if (!quad)
@@ -226,9 +229,11 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
     }
     return quad->Program != nullptr;
   };
-  if (!build(in.Distance, vtkContactDistanceFS) || !build(in.Prepare, vtkContactPrepareFS) ||
-    !build(in.MultiPass, vtkContactMultiPassFS) || !build(in.PCF, vtkContactPCFFS) ||
-    !build(in.Gaussian, vtkContactGaussianFS) || !build(in.Resolve, vtkContactResolveFS))
+  const std::string distanceCube = std::string("#define CONTACT_CUBE\n") + vtkContactDistanceFS;
+  if (!build(in.Distance, vtkContactDistanceFS) || !build(in.DistanceCube, distanceCube.c_str()) ||
+    !build(in.Prepare, vtkContactPrepareFS) || !build(in.MultiPass, vtkContactMultiPassFS) ||
+    !build(in.PCF, vtkContactPCFFS) || !build(in.Gaussian, vtkContactGaussianFS) ||
+    !build(in.Resolve, vtkContactResolveFS))
   {
     vtkErrorMacro("Could not build the contact-hardening shaders.");
     in.Unsupported = true;
@@ -284,19 +289,40 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
   {
     const auto& light = lights[slot];
 
-    // Pass 2: the distance map, into Maps[0].
+    // Pass 2: the distance map, into Maps[0]. 2D maps are read through the
+    // non-comparing sampler; cube maps hold distances already.
     in.Target(context, w, h, in.Maps[0]);
-    light.DepthMap->Activate();
-    const int unit = light.DepthMap->GetTextureUnit();
-    glBindSampler(unit, in.RawDepthSampler);
+    vtkTextureObject* map = light.Point ? light.CubeMap : light.DepthMap;
+    map->Activate();
+    const int unit = map->GetTextureUnit();
+    if (!light.Point)
+    {
+      glBindSampler(unit, in.RawDepthSampler);
+    }
     in.Draw(
-      this->Screen.get(), in.Distance, nullptr,
+      this->Screen.get(), light.Point ? in.DistanceCube : in.Distance, nullptr,
       [&](vtkShaderProgram* program)
       {
-        program->SetUniformi("lightDepth", unit);
-        vtkShadowMapManager::SetFrustumUniforms(program, "map", "", light.Map, this->MapSize);
-        float range[2] = { static_cast<float>(light.Map.Near), static_cast<float>(light.Map.Far) };
-        program->SetUniform2f("mapDepthRange", range);
+        if (light.Point)
+        {
+          program->SetUniformi("lightCube", unit);
+          const float center[3] = { static_cast<float>(light.Position.x),
+            static_cast<float>(light.Position.y), static_cast<float>(light.Position.z) };
+          program->SetUniform3f("cubeCenter", center);
+          program->SetUniformf("cubeTexel", 2.0f / static_cast<float>(this->MapSize));
+          const double far = light.Faces[0].Far;
+          program->SetUniformf(
+            "cubeRange", this->PackedCubeMaps ? static_cast<float>(far * far) : 0.0f);
+          program->SetUniformf("distanceBias", static_cast<float>(this->DistanceBias));
+        }
+        else
+        {
+          program->SetUniformi("lightDepth", unit);
+          vtkShadowMapManager::SetFrustumUniforms(program, "map", "", light.Map, this->MapSize);
+          float range[2] = { static_cast<float>(light.Map.Near),
+            static_cast<float>(light.Map.Far) };
+          program->SetUniform2f("mapDepthRange", range);
+        }
         program->SetUniformf("normalBias", static_cast<float>(this->NormalBias));
         program->SetUniformi("useLightSize", this->UseLightSize ? 1 : 0);
         const double size =
@@ -314,8 +340,11 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
         program->SetUniformf("kernelVariance", kernelVariance);
       },
       tolerance, this->DebugView);
-    glBindSampler(unit, 0);
-    light.DepthMap->Deactivate();
+    if (!light.Point)
+    {
+      glBindSampler(unit, 0);
+    }
+    map->Deactivate();
     in.Untarget();
 
     // Umbra early-out and pass 3, into both ping-pong buffers.
@@ -412,8 +441,8 @@ void vtkContactHardeningShadowPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);
   vtkInternals& in = *this->Internals;
-  for (auto* quad :
-    { &in.Distance, &in.Prepare, &in.MultiPass, &in.PCF, &in.Gaussian, &in.Resolve })
+  for (auto* quad : { &in.Distance, &in.DistanceCube, &in.Prepare, &in.MultiPass, &in.PCF,
+         &in.Gaussian, &in.Resolve })
   {
     quad->reset();
   }

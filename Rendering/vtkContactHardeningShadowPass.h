@@ -30,6 +30,7 @@
  *
  * Also beyond the paper: blur taps across depth discontinuities of the view
  * are ignored, so shadows do not bleed from a floor onto an object in front.
+ * Point lights work the same way from their cube maps of squared distances.
  * Translucent surfaces receive the hard shadow of the light's map.
  *
  * Needs OpenGL 3.3 (sampler objects, to read the shadow map's raw depth);
@@ -167,6 +168,7 @@ protected:
   bool RenderShadowMaps(const vtkRenderState* s) override;
   bool RenderScreenSpace(const vtkRenderState* s) override;
   bool UsesScreenSpace() const override { return true; }
+  bool SupportsPointLights() const override { return true; }
 
   int Variant = MultiPass;
   bool UseLightSize = true;

@@ -3,7 +3,17 @@
 // penumbra width w = (d_receiver - d_blocker) * w_light / d_blocker (section
 // 6) in pixels, as a kernel size (PCF, Gaussian) or a number of blur passes
 // (multi-pass).
-uniform sampler2D lightDepth; // raw depth: read through a non-comparing sampler
+// A 2D map's raw depth (through a non-comparing sampler), or, when
+// CONTACT_CUBE is defined, a point light's cube map of squared distances.
+#ifdef CONTACT_CUBE
+uniform samplerCube lightCube;
+uniform vec3 cubeCenter;
+uniform float cubeTexel;
+uniform float cubeRange;
+uniform float distanceBias;
+#else
+uniform sampler2D lightDepth;
+#endif
 uniform mat4 mapWorldToMap;
 uniform vec4 mapEye;
 uniform vec3 mapAxis;
@@ -67,28 +77,49 @@ void main()
   // neighbours, wrong only on silhouette pixels, where blurs stop anyway.
   vec3 normal = normalize(cross(dFdx(position), dFdy(position)));
   float cameraDistance = distance(position, cameraPosition);
+  vec4 lit = vec4(0.0, 0.0, cameraDistance, 0.0);
+
+  // The receiver's and the nearest blocker's distances from the light.
+  float receiverDistance;
+  float blockerDistance;
+#ifdef CONTACT_CUBE
+  float size;
+  vec3 direction = vtkShadowCubeDirection(
+    cubeCenter, vec4(position, 1.0), normal, cubeTexel, normalBias, size);
+  float stored = vtkShadowCubeStored(lightCube, direction, cubeRange);
+  if (dot(direction, direction) * distanceBias <= stored)
+  {
+    gl_FragData[0] = lit;
+    return;
+  }
+  receiverDistance = length(direction);
+  blockerDistance = sqrt(stored);
+  bool perspective = true;
+#else
   vec4 receiver = vtkShadowNormalOffset(
     vec4(position, 1.0), normal, mapEye, mapAxis, mapFootprint, normalBias);
   vec4 p = mapWorldToMap * receiver;
   p.xyz /= p.w;
   if (p.w <= 0.0 || any(lessThan(p.xyz, vec3(0.0))) || any(greaterThan(p.xyz, vec3(1.0))))
   {
-    gl_FragData[0] = vec4(0.0, 0.0, cameraDistance, 0.0);
+    gl_FragData[0] = lit;
     return;
   }
   float blockerDepth = texture(lightDepth, p.xy).r;
   if (p.z <= blockerDepth)
   {
-    gl_FragData[0] = vec4(0.0, 0.0, cameraDistance, 0.0);
+    gl_FragData[0] = lit;
     return;
   }
-  float receiverDistance = vtkContactLightDistance(p.z);
-  float blockerDistance = vtkContactLightDistance(blockerDepth);
+  receiverDistance = vtkContactLightDistance(p.z);
+  blockerDistance = vtkContactLightDistance(blockerDepth);
+  bool perspective = mapEye.w > 0.0;
+#endif
   float occluderDistance = max(receiverDistance - blockerDistance, 0.0);
   float d;
   if (useLightSize)
   {
-    float world = occluderDistance * lightSize / (mapEye.w > 0.0 ? blockerDistance : 1.0);
+    float world = occluderDistance * lightSize / (perspective ? blockerDistance : 1.0);
     float pixels = world / (pixelFootprint.x + pixelFootprint.y * cameraDistance);
     d = countPasses ? vtkContactPassesFor(pixels) : pixels;
   }

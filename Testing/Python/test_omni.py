@@ -21,7 +21,8 @@ scene = st.ball_scene(height=1.5, light_radius=radius, technique="reference",
 reference, _ = st.shadow_only(scene)
 mask = st.quality_mask(scene)
 errors = {}
-for technique in ("hard", "omni:hard", "omni:pcf4", "omni"):
+for technique in ("hard", "omni:hard", "omni:pcf4", "omni", "contact:pcf", "contact:gaussian",
+                  "contact"):
     visibility, _ = st.shadow_only(scene, technique)
     errors[technique] = st.rmse(visibility, reference, mask)
     print("RMSE %-10s %.4f" % (technique, errors[technique]))
@@ -30,3 +31,8 @@ st.check(errors["omni:hard"] == errors["hard"] or abs(errors["omni:hard"] - erro
 st.check(errors["omni"] < errors["omni:pcf4"] < errors["hard"] + 0.002,
          "poisson beats 4-tap PCF, which is no worse than hard")
 st.check(errors["omni"] < 0.6 * errors["hard"], "poisson is well below hard's error")
+# The contact technique sizes its kernels from point lights' radii too.
+for technique in ("contact:pcf", "contact:gaussian", "contact"):
+    st.check(errors[technique] < errors["hard"],
+             "%s beats hard under a point light (%.4f < %.4f)"
+             % (technique, errors[technique], errors["hard"]))
