@@ -54,7 +54,11 @@ std::vector<float> PoissonDisc()
 
 vtkStandardNewMacro(vtkOmnidirectionalShadowPass);
 
-vtkOmnidirectionalShadowPass::vtkOmnidirectionalShadowPass() = default;
+vtkOmnidirectionalShadowPass::vtkOmnidirectionalShadowPass()
+{
+  // Section 12.3.4: shade only visible fragments.
+  this->DepthPrePass = true;
+}
 vtkOmnidirectionalShadowPass::~vtkOmnidirectionalShadowPass() = default;
 
 //------------------------------------------------------------------------------

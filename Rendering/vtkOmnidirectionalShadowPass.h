@@ -17,7 +17,8 @@
  *    penumbra w = (d_receiver - d_blocker) * w_light / d_blocker.
  *
  * Spot and directional lights in the same scene get the framework's 2D maps
- * with a 4-tap bilinear PCF, as `hard` with PCF radius 1.
+ * with a 4-tap bilinear PCF, as `hard` with PCF radius 1. The chapter's
+ * depth-only pre-pass is on (vtkSoftShadowPass::DepthPrePass).
  */
 
 #ifndef vtkOmnidirectionalShadowPass_h

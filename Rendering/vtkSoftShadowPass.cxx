@@ -9,12 +9,17 @@
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
+#include "vtkOpenGLState.h"
+#include "vtkProp.h"
+#include "vtkRenderPassCollection.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
+#include "vtkSequencePass.h"
 #include "vtkShaderProgram.h"
 #include "vtkShadowMapManager.h"
 #include "vtkShadowScreenBuffers.h"
 #include "vtkTextureObject.h"
+#include "vtk_glew.h"
 
 #include "vtkShadowCubeLayersGS.h"
 #include "vtkShadowCubeLookupFS.h"
@@ -28,6 +33,18 @@
 #include <sstream>
 
 vtkInformationKeyMacro(vtkSoftShadowPass, RADIUS, Double);
+
+// The depth-only pre-pass as a step of the delegate's opaque sequence: it
+// runs after the camera pass has cleared and set up the frame.
+class vtkSoftShadowPass::vtkDepthPrePassStep : public vtkRenderPass
+{
+public:
+  static vtkDepthPrePassStep* New();
+  vtkTypeMacro(vtkDepthPrePassStep, vtkRenderPass);
+  vtkSoftShadowPass* Owner = nullptr;
+  void Render(const vtkRenderState* s) override { this->Owner->RenderDepthPrePass(s); }
+};
+vtkStandardNewMacro(vtkSoftShadowPass::vtkDepthPrePassStep);
 
 namespace
 {
@@ -188,9 +205,39 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
     this->Screen->ActivateTextures();
   }
 
+  // Cube maps are looked up across faces: filter across their seams.
+  vtkOpenGLState* state =
+    vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow())->GetState();
+  vtkOpenGLState::ScopedglEnableDisable seamless(state, GL_TEXTURE_CUBE_MAP_SEAMLESS);
+  state->vtkglEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+
+  // Gerasimov's depth-only pre-pass (section 12.3.4): opaque depth first, so
+  // the shading pass runs only on visible fragments.
+  auto* steps = vtkRenderStepsPass::SafeDownCast(this->DelegatePass);
+  vtkSmartPointer<vtkRenderPass> opaque = steps ? steps->GetOpaquePass() : nullptr;
+  const bool prePass = this->DepthPrePass && drawn && opaque;
+  if (prePass)
+  {
+    if (!this->PrePassSequence)
+    {
+      vtkNew<vtkDepthPrePassStep> step;
+      step->Owner = this;
+      this->PrePassSequence = vtkSmartPointer<vtkSequencePass>::New();
+      vtkNew<vtkRenderPassCollection> passes;
+      passes->AddItem(step);
+      passes->AddItem(opaque);
+      this->PrePassSequence->SetPasses(passes);
+    }
+    steps->SetOpaquePass(this->PrePassSequence);
+  }
+
   this->SetStage(Stage::Receivers);
   this->PreRender(s);
   this->DelegatePass->Render(s);
+  if (prePass)
+  {
+    steps->SetOpaquePass(opaque);
+  }
   this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
   this->PostRender(s);
   this->SetStage(Stage::Idle);
@@ -229,6 +276,25 @@ bool vtkSoftShadowPass::RenderLightDepthMaps(const vtkRenderState* s, bool linea
     }
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkSoftShadowPass::RenderDepthPrePass(const vtkRenderState* s)
+{
+  // The props carry this pass already (receivers): only the stage changes,
+  // to the shading-free depth shaders, then back.
+  vtkOpenGLState* state =
+    vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow())->GetState();
+  vtkOpenGLState::ScopedglColorMask colorMask(state);
+  vtkOpenGLState::ScopedglDepthMask depthMask(state);
+  state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  state->vtkglDepthMask(GL_TRUE);
+  this->SetStage(Stage::LightDepth);
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    s->GetPropArray()[i]->RenderOpaqueGeometry(s->GetRenderer());
+  }
+  this->SetStage(Stage::Receivers);
 }
 
 //------------------------------------------------------------------------------
@@ -475,6 +541,7 @@ void vtkSoftShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DistanceBias: " << this->DistanceBias << "\n";
   os << indent << "SinglePassCubeMaps: " << this->SinglePassCubeMaps << "\n";
   os << indent << "PackedCubeMaps: " << this->PackedCubeMaps << "\n";
+  os << indent << "DepthPrePass: " << this->DepthPrePass << "\n";
   os << indent << "ShadowOnlyLight: " << this->ShadowOnlyLight << "\n";
   os << indent << "DelegatePass: ";
   if (this->DelegatePass)

@@ -36,6 +36,7 @@
 #define vtkSoftShadowPass_h
 
 #include "vtkOpenGLRenderPass.h"
+#include "vtkSmartPointer.h"               // for vtkSmartPointer
 #include "vtkSoftShadowsRenderingModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
@@ -47,6 +48,7 @@ class vtkLight;
 class vtkOpenGLRenderWindow;
 class vtkRenderer;
 class vtkShadowMapManager;
+class vtkSequencePass;
 class vtkShadowScreenBuffers;
 
 class VTKSOFTSHADOWSRENDERING_EXPORT vtkSoftShadowPass : public vtkOpenGLRenderPass
@@ -127,6 +129,18 @@ public:
   vtkSetMacro(PackedCubeMaps, bool);
   vtkGetMacro(PackedCubeMaps, bool);
   vtkBooleanMacro(PackedCubeMaps, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Draw the opaque props' depth before shading them (Gerasimov's depth-only
+   * pre-pass), so that shadow lookups run only for visible fragments. Needs
+   * the default delegate (a vtkRenderStepsPass). Default off; on for
+   * vtkOmnidirectionalShadowPass.
+   */
+  vtkSetMacro(DepthPrePass, bool);
+  vtkGetMacro(DepthPrePass, bool);
+  vtkBooleanMacro(DepthPrePass, bool);
   ///@}
 
   ///@{
@@ -244,6 +258,7 @@ protected:
   double DistanceBias = 0.99;
   bool SinglePassCubeMaps = true;
   bool PackedCubeMaps = false;
+  bool DepthPrePass = false;
   int ShadowOnlyLight = -1;
   vtkRenderPass* DelegatePass = nullptr;
 
@@ -266,6 +281,9 @@ private:
   bool LinearMaps = false;
   vtkTimeStamp StageTime;
   bool PointLightReported = false;
+  class vtkDepthPrePassStep;
+  void RenderDepthPrePass(const vtkRenderState* s);
+  vtkSmartPointer<vtkSequencePass> PrePassSequence;
   std::set<vtkProp*> LayeredFallbackProps; ///< props already warned about, not owned
 };
 

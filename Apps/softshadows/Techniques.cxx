@@ -68,6 +68,9 @@ std::vector<TechniqueParameter> WithCommonParameters(std::vector<TechniqueParame
   own.push_back(Bind<vtkSoftShadowPass, bool>("packed_cube_maps", ValueType::Boolean, Range::Any(),
     "point lights: RGBA8 cube maps packing squared distances, not float ones",
     &vtkSoftShadowPass::SetPackedCubeMaps, &vtkSoftShadowPass::GetPackedCubeMaps));
+  own.push_back(Bind<vtkSoftShadowPass, bool>("depth_pre_pass", ValueType::Boolean, Range::Any(),
+    "draw opaque depth first so that shading and shadow lookups run on visible fragments only",
+    &vtkSoftShadowPass::SetDepthPrePass, &vtkSoftShadowPass::GetDepthPrePass));
   return own;
 }
 
