@@ -73,10 +73,16 @@ void main()
     return;
   }
   vec3 position = vtkScreenPositionWC(texCoord, depth);
-  // The face normal from derivatives: cheaper than vtkScreenNormalWC's four
-  // neighbours, wrong only on silhouette pixels, where blurs stop anyway.
-  vec3 normal = normalize(cross(dFdx(position), dFdy(position)));
+  // The face normal from derivatives, cheaper than vtkScreenNormalWC's four
+  // neighbours; but where a derivative spans a depth discontinuity (steeper
+  // than about 86 degrees), the neighbours' way, which skips the far side.
   float cameraDistance = distance(position, cameraPosition);
+  vec3 dx = dFdx(position);
+  vec3 dy = dFdy(position);
+  float footprint = pixelFootprint.x + pixelFootprint.y * cameraDistance;
+  vec3 normal = max(length(dx), length(dy)) < 16.0 * footprint
+    ? normalize(cross(dx, dy))
+    : vtkScreenNormalWC(depth, position);
   vec4 lit = vec4(0.0, 0.0, cameraDistance, 0.0);
 
   // The receiver's and the nearest blocker's distances from the light.
