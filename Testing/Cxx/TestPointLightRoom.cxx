@@ -1,0 +1,65 @@
+// A point light inside a closed room, one box towards each of the six walls
+// (Gerasimov, GPU Gems ch. 12): the regression image shows a shadow on every
+// wall the camera sees, drawn through a single-pass (layered) cube map; the
+// Python test test_point_lights.py checks all six walls against ray casting.
+#include "vtkCamera.h"
+#include "vtkCubeSource.h"
+#include "vtkHardShadowPass.h"
+#include "vtkLight.h"
+#include "vtkNew.h"
+#include "vtkRegressionTestImage.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+
+#include "ShadowTestScene.h"
+
+int TestPointLightRoom(int argc, char* argv[])
+{
+  vtkNew<vtkRenderer> renderer;
+  const double wall[3] = { 0.9, 0.9, 0.9 };
+  vtkNew<vtkCubeSource> room;
+  room->SetXLength(8);
+  room->SetYLength(8);
+  room->SetZLength(8);
+  ShadowTestScene::AddActor(renderer, room, wall);
+
+  const double boxes[6][3] = { { 1.6, 0, 0 }, { -1.6, 0, 0 }, { 0, 1.6, 0 }, { 0, -1.6, 0 },
+    { 0, 0, 1.6 }, { 0, 0, -1.6 } };
+  const double colors[6][3] = { { 0.9, 0.3, 0.3 }, { 0.3, 0.9, 0.9 }, { 0.3, 0.9, 0.3 },
+    { 0.9, 0.3, 0.9 }, { 0.9, 0.9, 0.3 }, { 0.3, 0.3, 0.9 } };
+  for (int i = 0; i < 6; ++i)
+  {
+    vtkNew<vtkCubeSource> box;
+    box->SetCenter(boxes[i][0], boxes[i][1], boxes[i][2]);
+    box->SetXLength(0.6);
+    box->SetYLength(0.6);
+    box->SetZLength(0.6);
+    ShadowTestScene::AddActor(renderer, box, colors[i]);
+  }
+
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPositional(true);
+  light->SetPosition(0, 0, 0);
+  light->SetFocalPoint(0, -1, 0);
+  light->SetConeAngle(180);
+  renderer->AddLight(light);
+
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(-3.5, -3.5, 3.5);
+  camera->SetFocalPoint(1, 1, -1);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetViewAngle(100);
+  renderer->ResetCameraClippingRange();
+
+  vtkNew<vtkHardShadowPass> pass;
+  pass->SetMapSize(256);
+  renderer->SetPass(pass);
+  vtkNew<vtkRenderWindow> window;
+  window->SetSize(240, 180);
+  window->AddRenderer(renderer);
+  window->Render();
+
+  int result = vtkRegressionTestImage(window);
+  return result == vtkRegressionTester::FAILED ? EXIT_FAILURE : EXIT_SUCCESS;
+}
