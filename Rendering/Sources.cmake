@@ -12,6 +12,10 @@ set(softshadows_rendering_private_classes
   vtkShadowMapManager
   vtkShadowScreenBuffers)
 
+# Header-only internals.
+set(softshadows_rendering_private_headers
+  vtkShadowSampling.h)
+
 # Shaders live in glsl/ and are embedded as C strings at build time.
 set(softshadows_rendering_shaders
   vtkContactCommonFS
@@ -22,7 +26,6 @@ set(softshadows_rendering_shaders
   vtkContactPrepareFS
   vtkContactResolveFS
   vtkOmniPoissonFS
-  vtkShadowAccumulateCubeFS
   vtkShadowAccumulateFS
   vtkShadowCubeLayersGS
   vtkShadowCubeLookupFS

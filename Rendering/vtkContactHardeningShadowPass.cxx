@@ -10,6 +10,7 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkShadowMapManager.h"
+#include "vtkShadowSampling.h"
 #include "vtkShadowScreenBuffers.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
@@ -30,44 +31,11 @@
 
 #include <array>
 #include <cmath>
-#include <random>
 #include <string>
 
 namespace
 {
 constexpr int MaximumTaps = 64;
-
-// Section 3.1: up to 64 Poisson-disk points in [-1,1]^2, the first at the
-// origin. Dart throwing with a fixed seed and a shrinking minimum distance,
-// so the set is the same every run and any prefix is well spread.
-std::vector<glm::vec2> PoissonDisk()
-{
-  std::vector<glm::vec2> points{ glm::vec2(0.0f) };
-  std::mt19937 generator(7);
-  auto uniform = [&generator]() { return (generator() >> 8) * (2.0f / 16777216.0f) - 1.0f; };
-  float spacing = 0.6f;
-  int misses = 0;
-  while (static_cast<int>(points.size()) < MaximumTaps)
-  {
-    const glm::vec2 candidate(uniform(), uniform());
-    bool free = true;
-    for (const auto& p : points)
-    {
-      free = free && glm::distance(p, candidate) >= spacing;
-    }
-    if (free)
-    {
-      points.push_back(candidate);
-      misses = 0;
-    }
-    else if (++misses > 2000)
-    {
-      spacing *= 0.9f;
-      misses = 0;
-    }
-  }
-  return points;
-}
 
 vtkSmartPointer<vtkTextureObject> FloatTexture(vtkOpenGLRenderWindow* context, int w, int h)
 {
@@ -97,7 +65,9 @@ public:
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   unsigned int RawDepthSampler = 0; // reads a depth map without comparison
   bool Unsupported = false;
-  std::vector<glm::vec2> Poisson = PoissonDisk();
+  // Section 3.1: up to 64 Poisson-disk points in [-1,1]^2, the first at the
+  // origin.
+  std::vector<glm::vec2> Poisson = vtkShadowSampling::PoissonDisk(MaximumTaps, 7, false, true);
 
   /// Offsets and normalised Gaussian weights of the first `count` points,
   /// with sigma = size / 3 for offsets scaled by size / 2 (the weights do not

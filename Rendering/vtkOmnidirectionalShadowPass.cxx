@@ -3,6 +3,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkShaderProgram.h"
 #include "vtkShadowMapManager.h"
+#include "vtkShadowSampling.h"
 
 #include "vtkOmniPoissonFS.h"
 
@@ -10,47 +11,7 @@
 #include <glm/vec2.hpp>
 
 #include <algorithm>
-#include <random>
 #include <vector>
-
-namespace
-{
-// 32 points of a Poisson disk in the unit disc, by dart throwing from a fixed
-// seed with a shrinking spacing; any prefix is well spread.
-std::vector<float> PoissonDisc()
-{
-  std::vector<glm::vec2> points;
-  std::mt19937 generator(11);
-  auto uniform = [&generator]() { return (generator() >> 8) * (2.0f / 16777216.0f) - 1.0f; };
-  float spacing = 0.5f;
-  int misses = 0;
-  while (points.size() < 32)
-  {
-    const glm::vec2 candidate(uniform(), uniform());
-    bool free = glm::length(candidate) <= 1.0f;
-    for (const auto& p : points)
-    {
-      free = free && glm::distance(p, candidate) >= spacing;
-    }
-    if (free)
-    {
-      points.push_back(candidate);
-      misses = 0;
-    }
-    else if (++misses > 2000)
-    {
-      spacing *= 0.9f;
-      misses = 0;
-    }
-  }
-  std::vector<float> flat;
-  for (const auto& p : points)
-  {
-    flat.insert(flat.end(), { p.x, p.y });
-  }
-  return flat;
-}
-}
 
 vtkStandardNewMacro(vtkOmnidirectionalShadowPass);
 
@@ -105,8 +66,8 @@ void vtkOmnidirectionalShadowPass::SetVisibilityUniforms(vtkShaderProgram* progr
   {
     return;
   }
-  static const std::vector<float> disc = PoissonDisc();
-  program->SetUniform2fv("omniPoisson", 32, disc.data());
+  static const std::vector<glm::vec2> disc = vtkShadowSampling::PoissonDisk(32, 11, true, false);
+  program->SetUniform2fv("omniPoisson", 32, &disc[0].x);
   program->SetUniformi("omniTaps", this->PoissonTaps);
   for (const auto& light : this->Maps->GetLights())
   {

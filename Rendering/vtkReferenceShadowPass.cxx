@@ -8,11 +8,11 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkShadowMapManager.h"
+#include "vtkShadowSampling.h"
 #include "vtkShadowScreenBuffers.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
-#include "vtkShadowAccumulateCubeFS.h"
 #include "vtkShadowAccumulateFS.h"
 #include "vtkShadowCubeLookupFS.h"
 #include "vtkShadowNormalOffsetFS.h"
@@ -27,49 +27,6 @@
 
 namespace
 {
-// Shirley & Chiu's concentric mapping: uniform square to uniform disc with
-// low distortion, so stratification survives.
-glm::dvec2 ConcentricDisc(double u, double v)
-{
-  const double a = 2.0 * u - 1.0, b = 2.0 * v - 1.0;
-  if (a == 0.0 && b == 0.0)
-  {
-    return glm::dvec2(0.0);
-  }
-  const double quarterPi = 0.25 * glm::pi<double>();
-  if (std::abs(a) > std::abs(b))
-  {
-    return a * glm::dvec2(std::cos(quarterPi * b / a), std::sin(quarterPi * b / a));
-  }
-  return b * glm::dvec2(std::sin(quarterPi * a / b), std::cos(quarterPi * a / b));
-}
-
-// Jittered k x k stratification of the unit disc, from a fixed seed. The
-// generator's raw output is mapped by hand: std distributions differ between
-// standard libraries, and the reference must not.
-std::vector<glm::dvec2> DiscSamples(int count, unsigned int seed)
-{
-  const int k = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(count))));
-  if (k == 1)
-  {
-    return { glm::dvec2(0.0) };
-  }
-  std::mt19937 generator(seed);
-  auto uniform = [&generator]() { return (generator() >> 8) * (1.0 / 16777216.0); };
-  std::vector<glm::dvec2> samples;
-  samples.reserve(static_cast<size_t>(k) * k);
-  for (int j = 0; j < k; ++j)
-  {
-    for (int i = 0; i < k; ++i)
-    {
-      const double u = (i + uniform()) / k;
-      const double v = (j + uniform()) / k;
-      samples.push_back(ConcentricDisc(u, v));
-    }
-  }
-  return samples;
-}
-
 void Basis(const glm::dvec3& axis, glm::dvec3& e1, glm::dvec3& e2)
 {
   const glm::dvec3 helper =
@@ -110,10 +67,11 @@ bool vtkReferenceShadowPass::RenderScreenSpace(const vtkRenderState* s)
   vtkInternals& internals = *this->Internals;
   if (!internals.Accumulate)
   {
-    internals.Accumulate = this->Screen->CreateQuad(
-      context, std::string(vtkShadowNormalOffsetFS) + "\n" + vtkShadowAccumulateFS);
+    const std::string lookups =
+      std::string(vtkShadowNormalOffsetFS) + "\n" + vtkShadowCubeLookupFS + "\n";
+    internals.Accumulate = this->Screen->CreateQuad(context, lookups + vtkShadowAccumulateFS);
     internals.AccumulateCube = this->Screen->CreateQuad(
-      context, std::string(vtkShadowCubeLookupFS) + "\n" + vtkShadowAccumulateCubeFS);
+      context, lookups + "#define ACCUMULATE_CUBE\n" + vtkShadowAccumulateFS);
   }
   if (!internals.Accumulate->Program || !internals.AccumulateCube->Program)
   {
@@ -125,7 +83,8 @@ bool vtkReferenceShadowPass::RenderScreenSpace(const vtkRenderState* s)
   for (size_t slot = 0; slot < lights.size(); ++slot)
   {
     const auto& light = lights[slot];
-    const auto disc = DiscSamples(light.Radius > 0.0 ? this->NumberOfSamples : 1, this->Seed);
+    const auto disc =
+      vtkShadowSampling::StratifiedDisc(light.Radius > 0.0 ? this->NumberOfSamples : 1, this->Seed);
     const float weight = 1.0f / static_cast<float>(disc.size());
     glm::dvec3 e1, e2;
     Basis(light.Direction, e1, e2);

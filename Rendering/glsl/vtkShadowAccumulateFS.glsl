@@ -1,12 +1,22 @@
 // Reference technique: adds one light sample's binary visibility, weighted
-// 1/N, to the light's visibility texture (additive blending).
+// 1/N, to the light's visibility texture (additive blending). The sample is
+// a 2D depth map, or, when ACCUMULATE_CUBE is defined, a point light's cube
+// map of squared distances.
+uniform float sampleNormalBias;
+uniform float sampleWeight;
+#ifdef ACCUMULATE_CUBE
+uniform samplerCube sampleCube;
+uniform vec3 sampleEye;
+uniform float sampleTexel;
+uniform float sampleDistanceBias;
+uniform float sampleRange;
+#else
 uniform sampler2DShadow sampleMap;
 uniform mat4 sampleWorldToMap;
 uniform vec4 sampleEye;
 uniform vec3 sampleAxis;
 uniform vec2 sampleFootprint;
-uniform float sampleNormalBias;
-uniform float sampleWeight;
+#endif
 
 void main()
 {
@@ -17,6 +27,10 @@ void main()
   }
   vec3 position = vtkScreenPositionWC(texCoord, depth);
   vec3 normal = vtkScreenNormalWC(depth, position);
+#ifdef ACCUMULATE_CUBE
+  float lit = vtkShadowCubeLookup(sampleCube, sampleEye, vec4(position, 1.0), normal, sampleTexel,
+    sampleNormalBias, sampleDistanceBias, sampleRange, 0);
+#else
   vec4 receiver = vtkShadowNormalOffset(
     vec4(position, 1.0), normal, sampleEye, sampleAxis, sampleFootprint, sampleNormalBias);
   vec4 p = sampleWorldToMap * receiver;
@@ -26,5 +40,6 @@ void main()
   {
     lit = texture(sampleMap, p.xyz);
   }
+#endif
   gl_FragData[0] = vec4(lit * sampleWeight);
 }

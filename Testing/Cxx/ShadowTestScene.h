@@ -18,9 +18,26 @@
 #include "vtkSmartPointer.h"
 #include "vtkSoftShadowPass.h"
 #include "vtkSphereSource.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <cmath>
 
 namespace ShadowTestScene
 {
+/// The red channel, in [0, 1], at the pixel where world point p lands: in
+/// shadow-only mode, the visibility there.
+inline double VisibilityAt(vtkRenderer* renderer, vtkRenderWindow* window, const double p[3])
+{
+  renderer->SetWorldPoint(p[0], p[1], p[2], 1.0);
+  renderer->WorldToDisplay();
+  const double* d = renderer->GetDisplayPoint();
+  const int x = static_cast<int>(std::lround(d[0]));
+  const int y = static_cast<int>(std::lround(d[1]));
+  vtkNew<vtkUnsignedCharArray> rgb;
+  window->GetPixelData(x, y, x, y, 0, rgb);
+  return rgb->GetValue(0) / 255.0;
+}
+
 inline vtkSmartPointer<vtkActor> AddActor(
   vtkRenderer* renderer, vtkAlgorithm* source, const double color[3])
 {

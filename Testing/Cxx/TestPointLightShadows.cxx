@@ -24,18 +24,6 @@
 
 namespace
 {
-double VisibilityAt(vtkRenderer* renderer, vtkRenderWindow* window, const double p[3])
-{
-  renderer->SetWorldPoint(p[0], p[1], p[2], 1.0);
-  renderer->WorldToDisplay();
-  const double* d = renderer->GetDisplayPoint();
-  const int x = static_cast<int>(std::lround(d[0]));
-  const int y = static_cast<int>(std::lround(d[1]));
-  vtkNew<vtkUnsignedCharArray> rgb;
-  window->GetPixelData(x, y, x, y, 0, rgb);
-  return rgb->GetValue(0) / 255.0;
-}
-
 vtkLight* AddLight(vtkRenderer* renderer, double x, double y, double z, double cone, double radius)
 {
   vtkNew<vtkLight> light;
@@ -114,7 +102,7 @@ int TestPointLightShadows(int argc, char* argv[])
     for (int point = 0; point < 3; ++point)
     {
       const double expected = point == light ? 0.0 : 1.0;
-      const double v = VisibilityAt(renderer, window, behind[point]);
+      const double v = ShadowTestScene::VisibilityAt(renderer, window, behind[point]);
       if (std::abs(v - expected) > 0.1)
       {
         std::cerr << "light " << light << " at (" << behind[point][0] << ", " << behind[point][2]

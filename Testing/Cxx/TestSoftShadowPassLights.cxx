@@ -19,22 +19,6 @@
 #include <cmath>
 #include <iostream>
 
-namespace
-{
-// Visibility (red channel) at the pixel where world point p lands.
-double VisibilityAt(vtkRenderer* renderer, vtkRenderWindow* window, const double p[3])
-{
-  renderer->SetWorldPoint(p[0], p[1], p[2], 1.0);
-  renderer->WorldToDisplay();
-  const double* d = renderer->GetDisplayPoint();
-  const int x = static_cast<int>(std::lround(d[0]));
-  const int y = static_cast<int>(std::lround(d[1]));
-  vtkNew<vtkUnsignedCharArray> rgb;
-  window->GetPixelData(x, y, x, y, 0, rgb);
-  return rgb->GetValue(0) / 255.0;
-}
-}
-
 int TestSoftShadowPassLights(int argc, char* argv[])
 {
   vtkNew<vtkRenderer> renderer;
@@ -93,7 +77,7 @@ int TestSoftShadowPassLights(int argc, char* argv[])
   {
     pass->SetShadowOnlyLight(c.light);
     window->Render();
-    const double v = VisibilityAt(renderer, window, c.point);
+    const double v = ShadowTestScene::VisibilityAt(renderer, window, c.point);
     if (std::abs(v - c.expected) > 0.1)
     {
       std::cerr << "light " << c.light << " at (" << c.point[0] << ", " << c.point[2]
