@@ -196,53 +196,59 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   }
 
   // 4. Draw the scene with the shadow term in every receiver's shader.
+  this->RenderReceivers(s, drawn && this->UsesScreenSpace());
+  vtkOpenGLCheckErrorMacro("failed after Render");
+}
+
+//------------------------------------------------------------------------------
+void vtkSoftShadowPass::RenderReceivers(const vtkRenderState* s, bool screenSpace)
+{
+  auto& shadowed = this->Maps->GetLights();
   for (auto& light : shadowed)
   {
     (light.Point ? light.CubeMap : light.DepthMap)->Activate();
   }
-  if (drawn && this->UsesScreenSpace())
+  if (screenSpace)
   {
     this->Screen->ActivateTextures();
   }
 
   // Cube maps are looked up across faces: filter across their seams.
   vtkOpenGLState* state =
-    vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow())->GetState();
+    vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow())->GetState();
   vtkOpenGLState::ScopedglEnableDisable seamless(state, GL_TEXTURE_CUBE_MAP_SEAMLESS);
   state->vtkglEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
 
   // Gerasimov's depth-only pre-pass (section 12.3.4): opaque depth first, so
-  // the shading pass runs only on visible fragments.
+  // the shading pass runs only on visible fragments. It is a step slotted
+  // before the default delegate's opaque pass, after its camera pass cleared.
   auto* steps = vtkRenderStepsPass::SafeDownCast(this->DelegatePass);
   vtkSmartPointer<vtkRenderPass> opaque = steps ? steps->GetOpaquePass() : nullptr;
-  const bool prePass = this->DepthPrePass && drawn && opaque;
+  const bool prePass = this->DepthPrePass && !shadowed.empty() && opaque;
   if (prePass)
   {
-    if (!this->PrePassSequence)
-    {
-      vtkNew<vtkDepthPrePassStep> step;
-      step->Owner = this;
-      this->PrePassSequence = vtkSmartPointer<vtkSequencePass>::New();
-      vtkNew<vtkRenderPassCollection> passes;
-      passes->AddItem(step);
-      passes->AddItem(opaque);
-      this->PrePassSequence->SetPasses(passes);
-    }
-    steps->SetOpaquePass(this->PrePassSequence);
+    vtkNew<vtkDepthPrePassStep> step;
+    step->Owner = this;
+    vtkNew<vtkRenderPassCollection> passes;
+    passes->AddItem(step);
+    passes->AddItem(opaque);
+    vtkNew<vtkSequencePass> sequence;
+    sequence->SetPasses(passes);
+    steps->SetOpaquePass(sequence);
   }
 
   this->SetStage(Stage::Receivers);
   this->PreRender(s);
   this->DelegatePass->Render(s);
+  this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
+  this->PostRender(s);
+  this->SetStage(Stage::Idle);
   if (prePass)
   {
     steps->SetOpaquePass(opaque);
   }
-  this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
-  this->PostRender(s);
-  this->SetStage(Stage::Idle);
 
-  if (drawn && this->UsesScreenSpace())
+  if (screenSpace)
   {
     this->Screen->DeactivateTextures();
   }
@@ -250,7 +256,6 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   {
     (light.Point ? light.CubeMap : light.DepthMap)->Deactivate();
   }
-  vtkOpenGLCheckErrorMacro("failed after Render");
 }
 
 //------------------------------------------------------------------------------

@@ -36,7 +36,6 @@
 #define vtkSoftShadowPass_h
 
 #include "vtkOpenGLRenderPass.h"
-#include "vtkSmartPointer.h"               // for vtkSmartPointer
 #include "vtkSoftShadowsRenderingModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
@@ -48,7 +47,6 @@ class vtkLight;
 class vtkOpenGLRenderWindow;
 class vtkRenderer;
 class vtkShadowMapManager;
-class vtkSequencePass;
 class vtkShadowScreenBuffers;
 
 class VTKSOFTSHADOWSRENDERING_EXPORT vtkSoftShadowPass : public vtkOpenGLRenderPass
@@ -283,7 +281,7 @@ private:
   bool PointLightReported = false;
   class vtkDepthPrePassStep;
   void RenderDepthPrePass(const vtkRenderState* s);
-  vtkSmartPointer<vtkSequencePass> PrePassSequence;
+  void RenderReceivers(const vtkRenderState* s, bool screenSpace);
   std::set<vtkProp*> LayeredFallbackProps; ///< props already warned about, not owned
 };
 
