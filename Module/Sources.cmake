@@ -1,4 +1,12 @@
 # The Filters module's classes, shared by the standalone build (CMakeLists.txt
 # here) and the remote-module build (cmake/RemoteModule.cmake).
 set(softshadows_filters_classes
+  vtkEdgeAdjacencyFilter
   vtkFenceSource)
+# Internal helpers (OpenMesh lives here, out of the public headers): compiled
+# in, neither installed nor wrapped.
+set(softshadows_filters_private_classes
+  vtkSoftShadowsEdgeTable
+  vtkSoftShadowsTriangleMesh)
+set(softshadows_filters_private_headers
+  vtkSoftShadowsLargeBuffers.h)
