@@ -2,7 +2,8 @@
 # here) and the remote-module build (cmake/RemoteModule.cmake).
 set(softshadows_filters_classes
   vtkEdgeAdjacencyFilter
-  vtkFenceSource)
+  vtkFenceSource
+  vtkTopologyAwareMeshFilter)
 # Internal helpers (OpenMesh lives here, out of the public headers): compiled
 # in, neither installed nor wrapped.
 set(softshadows_filters_private_classes
