@@ -3,11 +3,13 @@
 set(softshadows_filters_classes
   vtkEdgeAdjacencyFilter
   vtkFenceSource
+  vtkLightSilhouetteFilter
   vtkTopologyAwareMeshFilter)
-# Internal helpers (OpenMesh lives here, out of the public headers): compiled
-# in, neither installed nor wrapped.
+# Internal helpers (OpenMesh and the silhouette hierarchy live here, out of the
+# public headers): compiled in, neither installed nor wrapped.
 set(softshadows_filters_private_classes
   vtkSoftShadowsEdgeTable
+  vtkSoftShadowsNormalConeTree
   vtkSoftShadowsTriangleMesh)
 set(softshadows_filters_private_headers
   vtkSoftShadowsLargeBuffers.h)

@@ -2,6 +2,7 @@
 # Included at the end of Testing/CMakeLists.txt.
 set(filter_tests
   TestEdgeAdjacencyFilter
+  TestLightSilhouetteFilter
   TestTopologyAwareMeshFilter)
 create_test_sourcelist(filter_driver_sources SoftShadowsFiltersCxxTests.cxx ${filter_tests})
 list(TRANSFORM filter_tests APPEND ".cxx" OUTPUT_VARIABLE filter_test_sources)
@@ -14,6 +15,7 @@ target_link_libraries(SoftShadowsFiltersCxxTests PRIVATE
   VTK::CommonDataModel
   VTK::FiltersCore
   VTK::FiltersSources
+  VTK::RenderingCore
   glm::glm)
 foreach (test IN LISTS filter_tests)
   add_test(NAME "Cxx.Filters.${test}" COMMAND SoftShadowsFiltersCxxTests ${test})

@@ -1,0 +1,405 @@
+#include "vtkLightSilhouetteFilter.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkLight.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+#include "vtkSoftShadowsEdgeTable.h"
+#include "vtkSoftShadowsNormalConeTree.h"
+#include "vtkSoftShadowsTriangleMesh.h"
+#include "vtkTypeInt32Array.h"
+
+#include <algorithm> // for std::lower_bound, std::min
+#include <chrono>    // for std::chrono::steady_clock
+#include <cmath>     // for std::isfinite
+
+vtkStandardNewMacro(vtkLightSilhouetteFilter);
+
+using vtksoftshadows::FacesLight;
+
+//------------------------------------------------------------------------------
+// What the searches reuse while the input is unmodified: the faces' planes,
+// the edge-to-faces map and, once built, the hierarchy.
+struct vtkLightSilhouetteFilter::vtkInternals
+{
+  vtkPolyData* Input = nullptr; // identity only, with its modification time
+  vtkMTimeType InputTime = 0;
+  bool Valid = false;
+  bool TreeBuilt = false;
+
+  vtksoftshadows::TriangleMesh Mesh;
+  vtksoftshadows::EdgeTable Table;
+  std::vector<double> Normals; // unit normal a face
+  std::vector<double> Offsets; // n . p0 a face
+  // Edges the tree does not hold (border, non-manifold, inconsistently
+  // oriented, or with a face of zero area): tested one by one every time.
+  std::vector<std::int32_t> Irregular;
+  vtksoftshadows::NormalConeTree Tree;
+  std::vector<unsigned char> Front;    // brute force: each face toward the light?
+  std::vector<std::int32_t> VertexMap; // input point -> output point, -1 between updates
+
+  bool FaceFront(std::int32_t face, const double light[4]) const
+  {
+    return FacesLight(
+      this->Normals.data() + 3 * static_cast<vtkIdType>(face), this->Offsets[face], light);
+  }
+
+  // All faces on one side of the plane through the edge and the light: the
+  // face's side is whether it faces the light, flipped when it runs the edge
+  // against the edge's first face. For two faces running the edge in opposite
+  // directions this is "one toward the light, one away"; a border edge, with
+  // one face, always is one.
+  template <typename FrontFn>
+  bool IsSilhouette(vtkIdType edge, FrontFn&& front) const
+  {
+    const std::int32_t* faces = this->Table.Faces.data() + 2 * edge;
+    if (faces[1] < 0)
+    {
+      return true;
+    }
+    const bool side = front(faces[0] >> 1);
+    if ((front(faces[1] >> 1) != ((faces[1] & 1) != 0)) != side)
+    {
+      return false;
+    }
+    if (this->Table.Types[edge] != 2)
+    {
+      return true;
+    }
+    const auto& more = this->Table.MoreEdges;
+    const std::size_t i = std::lower_bound(more.begin(), more.end(), edge) - more.begin();
+    for (std::int32_t j = this->Table.MoreOffsets[i]; j < this->Table.MoreOffsets[i + 1]; ++j)
+    {
+      const std::int32_t code = this->Table.MoreFaces[j];
+      if ((front(code >> 1) != ((code & 1) != 0)) != side)
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+};
+
+//------------------------------------------------------------------------------
+vtkLightSilhouetteFilter::vtkLightSilhouetteFilter()
+  : Internals(new vtkInternals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkLightSilhouetteFilter::~vtkLightSilhouetteFilter() = default;
+
+//------------------------------------------------------------------------------
+void vtkLightSilhouetteFilter::SetLight(vtkLight* light)
+{
+  if (this->Light != light)
+  {
+    this->Light = light;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkLight* vtkLightSilhouetteFilter::GetLight()
+{
+  return this->Light;
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkLightSilhouetteFilter::GetMTime()
+{
+  vtkMTimeType time = this->Superclass::GetMTime();
+  if (this->Light)
+  {
+    time = std::max(time, this->Light->GetMTime());
+  }
+  return time;
+}
+
+//------------------------------------------------------------------------------
+int vtkLightSilhouetteFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  vtkInternals& internals = *this->Internals;
+  this->NumberOfEdges = this->NumberOfSilhouetteEdges = this->NumberOfTestedEdges = 0;
+  this->BuildTime = 0.0;
+
+  // The light as (x, y, z, w): a point (w = 1) or a direction toward it (w = 0).
+  double light[4];
+  if (this->Light)
+  {
+    double position[3], focalPoint[3];
+    this->Light->GetTransformedPosition(position);
+    this->Light->GetTransformedFocalPoint(focalPoint);
+    const bool positional = this->Light->GetPositional() != 0;
+    for (int c = 0; c < 3; ++c)
+    {
+      light[c] = positional ? position[c] : position[c] - focalPoint[c];
+    }
+    light[3] = positional ? 1.0 : 0.0;
+  }
+  else
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      light[c] = this->LightPosition[c];
+    }
+    light[3] = this->Positional ? 1.0 : 0.0;
+  }
+  if (!std::isfinite(light[0]) || !std::isfinite(light[1]) || !std::isfinite(light[2]))
+  {
+    vtkErrorMacro(
+      "The light (" << light[0] << ", " << light[1] << ", " << light[2] << ") is not finite.");
+    return 0;
+  }
+  if (light[3] == 0.0 && light[0] == 0.0 && light[1] == 0.0 && light[2] == 0.0)
+  {
+    vtkErrorMacro("A directional light needs a direction: its position and focal point are the "
+                  "same point.");
+    return 0;
+  }
+
+  // The edge-to-faces map and the faces' planes, rebuilt only for a new or
+  // modified input.
+  const auto start = std::chrono::steady_clock::now();
+  bool built = false;
+  if (!internals.Valid || internals.Input != input || internals.InputTime != input->GetMTime())
+  {
+    internals = vtkInternals();
+    if (!vtksoftshadows::ExtractTriangles(input, this, internals.Mesh))
+    {
+      return 0;
+    }
+    vtksoftshadows::BuildEdgeTable(internals.Mesh, internals.Table);
+    const vtkIdType numFaces = internals.Mesh.GetNumberOfFaces();
+    internals.Normals.resize(3 * numFaces);
+    internals.Offsets.resize(numFaces);
+    const auto& mesh = internals.Mesh;
+    mesh.VisitPoints(
+      [&](const auto* x)
+      {
+        vtkSMPTools::For(0, numFaces,
+          [&](vtkIdType begin, vtkIdType end)
+          {
+            for (vtkIdType f = begin; f < end; ++f)
+            {
+              double* n = internals.Normals.data() + 3 * f;
+              vtksoftshadows::FaceNormal(x, mesh.Triangles.data() + 3 * f, n);
+              const vtkIdType p = mesh.Triangles[3 * f];
+              internals.Offsets[f] = n[0] * x[3 * p] + n[1] * x[3 * p + 1] + n[2] * x[3 * p + 2];
+            }
+          });
+      });
+    internals.Input = input;
+    internals.InputTime = input->GetMTime();
+    internals.Valid = true;
+    built = true;
+  }
+  const vtkIdType numEdges = internals.Table.GetNumberOfEdges();
+  if (numEdges >= (vtkIdType(1) << 30))
+  {
+    vtkErrorMacro(
+      "The input has " << numEdges << " edges; at most " << ((1 << 30) - 1) << " are supported.");
+    internals = vtkInternals();
+    return 0;
+  }
+  this->NumberOfEdges = numEdges;
+
+  // The hierarchy holds the edges with two consistently oriented faces of
+  // non-zero area; for those alone "all faces on one side" needs no more than
+  // the faces' cones. The rest are tested one by one.
+  if (this->Method == NORMAL_CONE_TREE && !internals.TreeBuilt)
+  {
+    const auto& table = internals.Table;
+    const double* normals = internals.Normals.data();
+    auto nonZero = [normals](std::int32_t face)
+    {
+      const double* n = normals + 3 * static_cast<vtkIdType>(face);
+      return n[0] != 0.0 || n[1] != 0.0 || n[2] != 0.0;
+    };
+    vtksoftshadows::RawVector<vtksoftshadows::NormalConeTree::Edge> edges;
+    vtksoftshadows::RawVector<double> midpoints;
+    edges.reserve(numEdges);
+    midpoints.reserve(3 * numEdges);
+    const std::int32_t* points = table.Points->GetPointer(0);
+    internals.Mesh.VisitPoints(
+      [&](const auto* x)
+      {
+        for (vtkIdType e = 0; e < numEdges; ++e)
+        {
+          const std::int32_t f0 = table.Faces[2 * e] >> 1;
+          const std::int32_t f1 = table.Faces[2 * e + 1] >> 1;
+          if (!table.IsConsistentManifold(e) || !nonZero(f0) || !nonZero(f1))
+          {
+            internals.Irregular.push_back(static_cast<std::int32_t>(e));
+            continue;
+          }
+          const std::int32_t a = points[2 * e];
+          const std::int32_t b = points[2 * e + 1];
+          edges.push_back({ static_cast<std::int32_t>(e), { f0, f1 }, { a, b } });
+          for (int c = 0; c < 3; ++c)
+          {
+            midpoints.push_back(
+              0.5 * (double(x[3 * vtkIdType(a) + c]) + double(x[3 * vtkIdType(b) + c])));
+          }
+        }
+      });
+    internals.Tree.Build(edges, midpoints, normals, internals.Offsets.data());
+    internals.TreeBuilt = true;
+    built = true;
+  }
+  if (built)
+  {
+    this->BuildTime =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+
+  // The search. Each silhouette edge comes as its id and its two points,
+  // ordered so that the faces lie on its left seen from the light: the way
+  // its first face runs it when that face is toward the light.
+  const std::int32_t* edgePoints = internals.Table.Points->GetPointer(0);
+  auto append = [&](std::vector<std::int32_t>& out, vtkIdType e, bool toward)
+  {
+    out.push_back(static_cast<std::int32_t>(e));
+    out.push_back(edgePoints[2 * e + (toward ? 0 : 1)]);
+    out.push_back(edgePoints[2 * e + (toward ? 1 : 0)]);
+  };
+  std::vector<std::int32_t> silhouette;
+  if (this->Method == BRUTE_FORCE)
+  {
+    const vtkIdType numFaces = internals.Mesh.GetNumberOfFaces();
+    internals.Front.resize(numFaces);
+    vtkSMPTools::For(0, numFaces,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType f = begin; f < end; ++f)
+        {
+          internals.Front[f] = internals.FaceFront(static_cast<std::int32_t>(f), light) ? 1 : 0;
+        }
+      });
+    // Fixed blocks of edges, joined in order: edges come out increasing,
+    // however threads share the blocks.
+    const vtkIdType blockSize = 1 << 14;
+    const vtkIdType numBlocks = (numEdges + blockSize - 1) / blockSize;
+    std::vector<std::vector<std::int32_t>> found(numBlocks);
+    vtkSMPTools::For(0, numBlocks, 1,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        auto front = [&](std::int32_t face) { return internals.Front[face] != 0; };
+        for (vtkIdType block = begin; block < end; ++block)
+        {
+          const vtkIdType last = std::min(numEdges, (block + 1) * blockSize);
+          for (vtkIdType e = block * blockSize; e < last; ++e)
+          {
+            if (internals.IsSilhouette(e, front))
+            {
+              append(found[block], e, front(internals.Table.Faces[2 * e] >> 1));
+            }
+          }
+        }
+      });
+    for (const auto& list : found)
+    {
+      silhouette.insert(silhouette.end(), list.begin(), list.end());
+    }
+    this->NumberOfTestedEdges = numEdges;
+  }
+  else
+  {
+    this->NumberOfTestedEdges =
+      internals.Tree.Query(light, internals.Mesh.MaxPointNorm, silhouette);
+    auto front = [&](std::int32_t face) { return internals.FaceFront(face, light); };
+    for (std::int32_t e : internals.Irregular)
+    {
+      if (internals.IsSilhouette(e, front))
+      {
+        append(silhouette, e, front(internals.Table.Faces[2 * e] >> 1));
+      }
+    }
+    this->NumberOfTestedEdges += static_cast<vtkIdType>(internals.Irregular.size());
+  }
+  const vtkIdType numSilhouette = static_cast<vtkIdType>(silhouette.size() / 3);
+  this->NumberOfSilhouetteEdges = numSilhouette;
+
+  // Output: each silhouette vertex once, in order of first use, so that lines
+  // that meet share a point.
+  std::vector<std::int32_t>& vertexMap = internals.VertexMap;
+  vertexMap.resize(internals.Mesh.NumberOfPoints, -1);
+  std::vector<std::int32_t> vertices;
+  vtkNew<vtkTypeInt32Array> offsets;
+  offsets->SetNumberOfValues(numSilhouette + 1);
+  vtkNew<vtkTypeInt32Array> connectivity;
+  connectivity->SetNumberOfValues(2 * numSilhouette);
+  vtkNew<vtkIdTypeArray> edgeIds;
+  edgeIds->SetName("EdgeIds");
+  edgeIds->SetNumberOfValues(numSilhouette);
+  std::int32_t* off = offsets->GetPointer(0);
+  std::int32_t* conn = connectivity->GetPointer(0);
+  vtkIdType* ids = edgeIds->GetPointer(0);
+  for (vtkIdType i = 0; i < numSilhouette; ++i)
+  {
+    ids[i] = silhouette[3 * i];
+    off[i] = static_cast<std::int32_t>(2 * i);
+    for (int k = 0; k < 2; ++k)
+    {
+      const std::int32_t point = silhouette[3 * i + 1 + k];
+      if (vertexMap[point] < 0)
+      {
+        vertexMap[point] = static_cast<std::int32_t>(vertices.size());
+        vertices.push_back(point);
+      }
+      conn[2 * i + k] = vertexMap[point];
+    }
+  }
+  off[numSilhouette] = static_cast<std::int32_t>(2 * numSilhouette);
+
+  vtkNew<vtkPoints> points;
+  points->SetDataType(input->GetPoints()->GetDataType());
+  points->SetNumberOfPoints(static_cast<vtkIdType>(vertices.size()));
+  vtkNew<vtkIdTypeArray> pointIds;
+  pointIds->SetName("InputPointIds");
+  pointIds->SetNumberOfValues(static_cast<vtkIdType>(vertices.size()));
+  vtkDataArray* inputData = input->GetPoints()->GetData();
+  vtkDataArray* outputData = points->GetData();
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+  {
+    outputData->SetTuple(static_cast<vtkIdType>(i), vertices[i], inputData);
+    pointIds->SetValue(static_cast<vtkIdType>(i), vertices[i]);
+    vertexMap[vertices[i]] = -1;
+  }
+
+  vtkNew<vtkCellArray> lines;
+  lines->SetData(offsets, connectivity);
+  output->SetPoints(points);
+  output->GetPointData()->AddArray(pointIds);
+  output->SetLines(lines);
+  output->GetCellData()->AddArray(edgeIds);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightSilhouetteFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "LightPosition: (" << this->LightPosition[0] << ", " << this->LightPosition[1]
+     << ", " << this->LightPosition[2] << ")\n";
+  os << indent << "Positional: " << (this->Positional ? "On" : "Off") << "\n";
+  os << indent << "Light: " << this->Light.GetPointer() << "\n";
+  os << indent << "Method: " << (this->Method == BRUTE_FORCE ? "BRUTE_FORCE" : "NORMAL_CONE_TREE")
+     << "\n";
+  os << indent << "NumberOfEdges: " << this->NumberOfEdges << "\n";
+  os << indent << "NumberOfSilhouetteEdges: " << this->NumberOfSilhouetteEdges << "\n";
+  os << indent << "NumberOfTestedEdges: " << this->NumberOfTestedEdges << "\n";
+  os << indent << "BuildTime: " << this->BuildTime << "\n";
+}
