@@ -25,28 +25,30 @@
  * @par Output
  * - Points: the input's points (the same vtkPoints), with its point data.
  * - Lines: one 2-point line per unique edge, running the way the edge's first
- *   face (the one that comes first in the input) runs it. Edges come in the order of OpenMesh's
- * half-edge structure, then edges that only refused faces have; the order is deterministic for a
- *   given input, and vtkLightSilhouetteFilter's "EdgeIds" index it.
- * - Cell data (one tuple per edge):
- *   | name | components | type | meaning |
- *   |---|---|---|---|
- *   | "EdgeType" | 1 | unsigned char | BORDER_EDGE (0): one face; MANIFOLD_EDGE (1): two faces;
- * NON_MANIFOLD_EDGE (2): three or more | | "ConsistentOrientation" | 1 | unsigned char | 1 for a
- * border edge, and for a manifold edge whose two faces run it in opposite directions; 0 otherwise
- * (the seam of a Moebius strip, a flipped face, every non-manifold edge) | | "FaceIds" | 2 |
- * vtkIdType | input cell ids of the edge's first two faces (faces in increasing order); -1 where a
- * border edge has no second face | | "FaceNormals" | 6 | float | unit normals (by winding) of those
- * two faces; a border edge stores its face's negated normal as the second, as the topology aware
- * mesh does, so that it always tests as a silhouette |
- * - Field data, the faces of the non-manifold edges (which have more than two):
- *   | name | components | type | meaning |
- *   |---|---|---|---|
- *   | "NonManifoldEdgeIds" | 1 | vtkIdType | the output cell ids of the non-manifold edges,
- * increasing | | "NonManifoldFaceOffsets" | 1 | vtkIdType | one more tuple than edges: the faces of
- * "NonManifoldEdgeIds"[i] are "NonManifoldFaceIds"[offset[i]] to [offset[i + 1] - 1] | |
- * "NonManifoldFaceIds" | 1 | vtkIdType | input cell ids of all faces of those edges, the two of
- * "FaceIds" first |
+ *   face (the one that comes first in the input) runs it. Edges come in the
+ *   order of OpenMesh's half-edge structure, then those that only refused
+ *   faces have; the order is the same for a given input every time, and
+ *   vtkLightSilhouetteFilter's "EdgeIds" index it.
+ * - Cell data, one tuple per edge:
+ *   - "EdgeType" (1 component, unsigned char): BORDER_EDGE (0), one face;
+ *     MANIFOLD_EDGE (1), two faces; NON_MANIFOLD_EDGE (2), three or more.
+ *   - "ConsistentOrientation" (1, unsigned char): 1 for a border edge and for
+ *     a manifold edge whose two faces run it in opposite directions; 0
+ *     otherwise (the seam of a Moebius strip, a flipped face, every
+ *     non-manifold edge).
+ *   - "FaceIds" (2, vtkIdType): input cell ids of the edge's first two faces
+ *     (in input order); -1 where a border edge has no second face.
+ *   - "FaceNormals" (6, float): unit normals (by winding) of those two faces;
+ *     a border edge stores its face's negated normal second, as the topology
+ *     aware mesh does, so that it always tests as a silhouette.
+ * - Field data, all faces of the non-manifold edges (more than two each):
+ *   - "NonManifoldEdgeIds" (1, vtkIdType): output cell ids of the
+ *     non-manifold edges, increasing.
+ *   - "NonManifoldFaceOffsets" (1, vtkIdType): one tuple more than edges; the
+ *     faces of NonManifoldEdgeIds[i] are NonManifoldFaceIds[offset[i]] to
+ *     NonManifoldFaceIds[offset[i + 1] - 1].
+ *   - "NonManifoldFaceIds" (1, vtkIdType): input cell ids of all faces of
+ *     those edges in input order, the two of "FaceIds" first.
  *
  * A face of zero area has the normal (0, 0, 0). Faces are the triangles after
  * triangulation, so the two faces of a quad's diagonal both carry the quad's

@@ -29,28 +29,26 @@
  * @par Output, default layout (one vertex per face corner, 3 per face)
  * - Points: float, the corners of kept face i at 3 i, 3 i + 1, 3 i + 2, in the
  *   input's winding. Polys: triangle i = (3 i, 3 i + 1, 3 i + 2).
- * - Point data, the vertex buffer (each a separate array, ready to upload as one
- *   attribute each):
- *   | name | components | type | meaning |
- *   |---|---|---|---|
- *   | "Position" | 3 | float (unsigned short if HalfPrecision) | the vertex's own position (the
- * paper's first field); in float the very array of the Points | | "FacePositions" | 9 | float
- * (unsigned short if HalfPrecision) | V1, V2, V3: the three corners of the vertex's face, the same
- * for its three vertices | | "AdjacentNormals" | 9 | float (unsigned short if HalfPrecision) | unit
- * normals n1, n2, n3 of the faces across edges V1V2, V2V3, V3V1; -n_f for a border or non-manifold
- * edge |
- * - Cell data: "InputCellIds" (1 component, vtkIdType): the input cell of each face.
+ * - Point data, the vertex buffer (one attribute per array):
+ *   - "Position" (3 components, float; unsigned short with HalfPrecision): the
+ *     vertex's own position (the paper's first field); in float, the very
+ *     array of the Points.
+ *   - "FacePositions" (9, float or unsigned short): V1, V2, V3, the corners
+ *     of the vertex's face, the same in its three vertices.
+ *   - "AdjacentNormals" (9, float or unsigned short): unit normals n1, n2, n3
+ *     of the faces across edges V1V2, V2V3 and V3V1; -n_f for a border or
+ *     non-manifold edge.
+ * - Cell data: "InputCellIds" (1, vtkIdType), the input cell of each face.
  *
  * @par Output with PerFaceAttributes (the paper's "stream frequency" layout)
  * - Points: the input's points (the same vtkPoints). Polys: the kept faces,
  *   with the input's point ids.
- * - Cell data, the per-instance buffer (draw 3 vertices per instance, one
- *   instance per face; the corner is gl_VertexID):
- *   | name | components | type | meaning |
- *   |---|---|---|---|
- *   | "FacePositions" | 9 | float (unsigned short if HalfPrecision) | as above, once per face |
- *   | "AdjacentNormals" | 9 | float (unsigned short if HalfPrecision) | as above, once per face |
- *   | "InputCellIds" | 1 | vtkIdType | the input cell of each face (not part of the buffer) |
+ * - Cell data, the per-instance buffer (draw 3 vertices an instance, one
+ *   instance a face; the corner is gl_VertexID):
+ *   - "FacePositions" (9, float or unsigned short): as above, once a face.
+ *   - "AdjacentNormals" (9, float or unsigned short): as above, once a face.
+ *   - "InputCellIds" (1, vtkIdType): the input cell of each face (not part of
+ *     the buffer).
  *
  * With HalfPrecision the unsigned short values are IEEE 754 binary16 bit
  * patterns, rounded to nearest even: upload them as GL_HALF_FLOAT.
