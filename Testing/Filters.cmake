@@ -1,8 +1,10 @@
-# Tests of the mesh-topology filters (Module/): one C++ driver, no rendering.
+# Tests of the mesh-topology filters (Module/): one C++ driver, no rendering,
+# and Python tests of the same filters through the vtksoftshadows package.
 # Included at the end of Testing/CMakeLists.txt.
 set(filter_tests
   TestEdgeAdjacencyFilter
   TestLightSilhouetteFilter
+  TestMeshFiltersRobustness
   TestTopologyAwareMeshFilter)
 create_test_sourcelist(filter_driver_sources SoftShadowsFiltersCxxTests.cxx ${filter_tests})
 list(TRANSFORM filter_tests APPEND ".cxx" OUTPUT_VARIABLE filter_test_sources)
@@ -19,4 +21,13 @@ target_link_libraries(SoftShadowsFiltersCxxTests PRIVATE
   glm::glm)
 foreach (test IN LISTS filter_tests)
   add_test(NAME "Cxx.Filters.${test}" COMMAND SoftShadowsFiltersCxxTests ${test})
+endforeach ()
+
+set(filter_python_tests
+  test_mesh_filters)
+foreach (test IN LISTS filter_python_tests)
+  add_test(NAME "Python.${test}"
+    COMMAND "${Python3_EXECUTABLE}" "${CMAKE_CURRENT_SOURCE_DIR}/Python/${test}.py")
+  set_tests_properties("Python.${test}" PROPERTIES
+    ENVIRONMENT "PYTHONPATH=${SOFTSHADOWS_PYTHONPATH}:${CMAKE_CURRENT_SOURCE_DIR}/Python")
 endforeach ()
