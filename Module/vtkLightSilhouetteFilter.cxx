@@ -44,8 +44,7 @@ struct vtkLightSilhouetteFilter::vtkInternals
   // oriented, or with a face of zero area): tested one by one every time.
   std::vector<std::int32_t> Irregular;
   vtksoftshadows::NormalConeTree Tree;
-  std::vector<unsigned char> Front;    // brute force: each face toward the light?
-  std::vector<std::int32_t> VertexMap; // input point -> output point, -1 between updates
+  std::vector<unsigned char> Front; // brute force: each face toward the light?
 
   bool FaceFront(std::int32_t face, const double light[4]) const
   {
@@ -133,7 +132,7 @@ int vtkLightSilhouetteFilter::RequestData(
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   vtkInternals& internals = *this->Internals;
   this->NumberOfEdges = this->NumberOfSilhouetteEdges = this->NumberOfTestedEdges = 0;
-  this->BuildTime = 0.0;
+  this->BuildTime = this->SearchTime = 0.0;
 
   // The light as (x, y, z, w): a point (w = 1) or a direction toward it (w = 0).
   double light[4];
@@ -275,6 +274,7 @@ int vtkLightSilhouetteFilter::RequestData(
     out.push_back(edgePoints[2 * e + (toward ? 0 : 1)]);
     out.push_back(edgePoints[2 * e + (toward ? 1 : 0)]);
   };
+  const auto searchStart = std::chrono::steady_clock::now();
   std::vector<std::int32_t> silhouette;
   if (this->Method == BRUTE_FORCE)
   {
@@ -329,14 +329,14 @@ int vtkLightSilhouetteFilter::RequestData(
     }
     this->NumberOfTestedEdges += static_cast<vtkIdType>(internals.Irregular.size());
   }
+  this->SearchTime =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - searchStart).count();
   const vtkIdType numSilhouette = static_cast<vtkIdType>(silhouette.size() / 3);
   this->NumberOfSilhouetteEdges = numSilhouette;
 
-  // Output: each silhouette vertex once, in order of first use, so that lines
-  // that meet share a point.
-  std::vector<std::int32_t>& vertexMap = internals.VertexMap;
-  vertexMap.resize(internals.Mesh.NumberOfPoints, -1);
-  std::vector<std::int32_t> vertices;
+  // Output: the lines on the input's own points (not copied: the silhouette
+  // changes with every light, the mesh does not), so lines that meet share
+  // their point.
   vtkNew<vtkTypeInt32Array> offsets;
   offsets->SetNumberOfValues(numSilhouette + 1);
   vtkNew<vtkTypeInt32Array> connectivity;
@@ -349,40 +349,16 @@ int vtkLightSilhouetteFilter::RequestData(
   vtkIdType* ids = edgeIds->GetPointer(0);
   for (vtkIdType i = 0; i < numSilhouette; ++i)
   {
-    ids[i] = silhouette[3 * i];
     off[i] = static_cast<std::int32_t>(2 * i);
-    for (int k = 0; k < 2; ++k)
-    {
-      const std::int32_t point = silhouette[3 * i + 1 + k];
-      if (vertexMap[point] < 0)
-      {
-        vertexMap[point] = static_cast<std::int32_t>(vertices.size());
-        vertices.push_back(point);
-      }
-      conn[2 * i + k] = vertexMap[point];
-    }
+    ids[i] = silhouette[3 * i];
+    conn[2 * i] = silhouette[3 * i + 1];
+    conn[2 * i + 1] = silhouette[3 * i + 2];
   }
   off[numSilhouette] = static_cast<std::int32_t>(2 * numSilhouette);
 
-  vtkNew<vtkPoints> points;
-  points->SetDataType(input->GetPoints()->GetDataType());
-  points->SetNumberOfPoints(static_cast<vtkIdType>(vertices.size()));
-  vtkNew<vtkIdTypeArray> pointIds;
-  pointIds->SetName("InputPointIds");
-  pointIds->SetNumberOfValues(static_cast<vtkIdType>(vertices.size()));
-  vtkDataArray* inputData = input->GetPoints()->GetData();
-  vtkDataArray* outputData = points->GetData();
-  for (std::size_t i = 0; i < vertices.size(); ++i)
-  {
-    outputData->SetTuple(static_cast<vtkIdType>(i), vertices[i], inputData);
-    pointIds->SetValue(static_cast<vtkIdType>(i), vertices[i]);
-    vertexMap[vertices[i]] = -1;
-  }
-
   vtkNew<vtkCellArray> lines;
   lines->SetData(offsets, connectivity);
-  output->SetPoints(points);
-  output->GetPointData()->AddArray(pointIds);
+  output->SetPoints(input->GetPoints());
   output->SetLines(lines);
   output->GetCellData()->AddArray(edgeIds);
   return 1;
@@ -402,4 +378,5 @@ void vtkLightSilhouetteFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfSilhouetteEdges: " << this->NumberOfSilhouetteEdges << "\n";
   os << indent << "NumberOfTestedEdges: " << this->NumberOfTestedEdges << "\n";
   os << indent << "BuildTime: " << this->BuildTime << "\n";
+  os << indent << "SearchTime: " << this->SearchTime << "\n";
 }

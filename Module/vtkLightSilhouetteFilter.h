@@ -42,10 +42,10 @@
  * output.
  *
  * @par Output
- * - Points: the silhouette's vertices, each input point once, in the order
- *   the lines first use them, with the input points' data type; lines that
- *   meet share their point (where smoothies put corners).
- * - Point data: "InputPointIds" (1 component, vtkIdType), the input point id.
+ * - Points: the input's points (the same vtkPoints, not copied: the
+ *   silhouette changes with every light, the mesh does not). Lines that meet
+ *   share their point, where smoothies put their corners. Run
+ *   vtkCleanPolyData to keep only the points the lines use.
  * - Lines: one 2-point line per silhouette edge, oriented so that seen from
  *   the light the faces casting the shadow lie to its left (it runs the way
  *   its first face runs it when that face is toward the light, the other way
@@ -132,14 +132,16 @@ public:
   ///@{
   /**
    * Results of the last update: edges of the input, silhouette edges found,
-   * edges the search tested one by one (all of them for BRUTE_FORCE), and the
+   * edges the search tested one by one (all of them for BRUTE_FORCE), the
    * wall-clock seconds spent building the cached edge map and, for
-   * NORMAL_CONE_TREE, the hierarchy (0 when they were reused).
+   * NORMAL_CONE_TREE, the hierarchy (0 when they were reused), and the
+   * seconds the search itself took (without building or output).
    */
   vtkGetMacro(NumberOfEdges, vtkIdType);
   vtkGetMacro(NumberOfSilhouetteEdges, vtkIdType);
   vtkGetMacro(NumberOfTestedEdges, vtkIdType);
   vtkGetMacro(BuildTime, double);
+  vtkGetMacro(SearchTime, double);
   ///@}
 
   /**
@@ -162,6 +164,7 @@ protected:
   vtkIdType NumberOfSilhouetteEdges = 0;
   vtkIdType NumberOfTestedEdges = 0;
   double BuildTime = 0.0;
+  double SearchTime = 0.0;
 
 private:
   vtkLightSilhouetteFilter(const vtkLightSilhouetteFilter&) = delete;

@@ -60,14 +60,12 @@ vtkPolyData* Output(vtkAlgorithm* filter)
 std::set<std::pair<vtkIdType, vtkIdType>> OrientedLines(vtkPolyData* silhouette)
 {
   std::set<std::pair<vtkIdType, vtkIdType>> lines;
-  vtkDataArray* ids = silhouette->GetPointData()->GetArray("InputPointIds");
-  for (vtkIdType i = 0; ids && i < silhouette->GetNumberOfLines(); ++i)
+  for (vtkIdType i = 0; i < silhouette->GetNumberOfLines(); ++i)
   {
     vtkIdType n;
     const vtkIdType* line;
     silhouette->GetLines()->GetCellAtId(i, n, line);
-    lines.emplace(static_cast<vtkIdType>(ids->GetComponent(line[0], 0)),
-      static_cast<vtkIdType>(ids->GetComponent(line[1], 0)));
+    lines.emplace(line[0], line[1]);
   }
   return lines;
 }
