@@ -8,7 +8,8 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkPolyDataMapper,
                                          vtkRenderWindow, vtkRenderer)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (OpenGL factory)
 
-from vtksoftshadows import (vtkFenceSource, vtkHardShadowPass, vtkReferenceShadowPass,
+from vtksoftshadows import (vtkContactHardeningShadowPass, vtkFenceSource, vtkHardShadowPass,
+                            vtkOmnidirectionalShadowPass, vtkReferenceShadowPass,
                             vtkSoftShadowPass)
 
 import shadowtest as st
@@ -64,7 +65,8 @@ def visibility_at(x, y, z):
     return rgb.GetValue(0) / 255.0
 
 
-for pass_type in (vtkHardShadowPass, vtkReferenceShadowPass):
+for pass_type in (vtkHardShadowPass, vtkReferenceShadowPass, vtkContactHardeningShadowPass,
+                  vtkOmnidirectionalShadowPass):
     shadow_pass = pass_type()
     shadow_pass.SetMapSize(512)
     shadow_pass.SetShadowOnlyLight(0)
