@@ -17,6 +17,7 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <sstream>
 
 namespace
 {
@@ -91,6 +92,14 @@ void ExpectError(vtkPolyData* mesh, const std::string& text, const std::string& 
   filters.Run(Tetrahedron());
   MESH_CHECK(filters.Log->Errors.empty(), label + ": no error on the next, good mesh");
   MESH_CHECK_EQUAL(Output(filters.Adjacency)->GetNumberOfLines(), 6, label + ": recovered");
+  for (vtkAlgorithm* filter : filters.All())
+  {
+    std::ostringstream printed;
+    filter->Print(printed);
+    MESH_CHECK(printed.str().find("Number") != std::string::npos ||
+        printed.str().find("Bytes") != std::string::npos,
+      label + ": PrintSelf of " + filter->GetClassName());
+  }
 }
 
 void TestEmpty()
