@@ -88,6 +88,40 @@ struct vtkLightSilhouetteFilter::vtkInternals
   }
 };
 
+namespace
+{
+// Tests edges edge(0) .. edge(count - 1) one by one, in parallel over fixed
+// blocks joined in order: the output order does not depend on the threads.
+template <typename EdgeFn, typename FrontFn, typename AppendFn, typename Internals>
+void TestInBlocks(vtkIdType count, EdgeFn&& edge, FrontFn&& front, AppendFn&& append,
+  const Internals& internals, std::vector<std::int32_t>& silhouette)
+{
+  const vtkIdType blockSize = 1 << 14;
+  const vtkIdType numBlocks = (count + blockSize - 1) / blockSize;
+  std::vector<std::vector<std::int32_t>> found(numBlocks);
+  vtkSMPTools::For(0, numBlocks, 1,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType block = begin; block < end; ++block)
+      {
+        const vtkIdType last = std::min(count, (block + 1) * blockSize);
+        for (vtkIdType i = block * blockSize; i < last; ++i)
+        {
+          const vtkIdType e = edge(i);
+          if (internals.IsSilhouette(e, front))
+          {
+            append(found[block], e, front(internals.Table.Faces[2 * e] >> 1));
+          }
+        }
+      }
+    });
+  for (const auto& list : found)
+  {
+    silhouette.insert(silhouette.end(), list.begin(), list.end());
+  }
+}
+}
+
 //------------------------------------------------------------------------------
 vtkLightSilhouetteFilter::vtkLightSilhouetteFilter()
   : Internals(new vtkInternals)
@@ -288,31 +322,9 @@ int vtkLightSilhouetteFilter::RequestData(
           internals.Front[f] = internals.FaceFront(static_cast<std::int32_t>(f), light) ? 1 : 0;
         }
       });
-    // Fixed blocks of edges, joined in order: edges come out increasing,
-    // however threads share the blocks.
-    const vtkIdType blockSize = 1 << 14;
-    const vtkIdType numBlocks = (numEdges + blockSize - 1) / blockSize;
-    std::vector<std::vector<std::int32_t>> found(numBlocks);
-    vtkSMPTools::For(0, numBlocks, 1,
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        auto front = [&](std::int32_t face) { return internals.Front[face] != 0; };
-        for (vtkIdType block = begin; block < end; ++block)
-        {
-          const vtkIdType last = std::min(numEdges, (block + 1) * blockSize);
-          for (vtkIdType e = block * blockSize; e < last; ++e)
-          {
-            if (internals.IsSilhouette(e, front))
-            {
-              append(found[block], e, front(internals.Table.Faces[2 * e] >> 1));
-            }
-          }
-        }
-      });
-    for (const auto& list : found)
-    {
-      silhouette.insert(silhouette.end(), list.begin(), list.end());
-    }
+    auto front = [&](std::int32_t face) { return internals.Front[face] != 0; };
+    TestInBlocks(
+      numEdges, [](vtkIdType e) { return e; }, front, append, internals, silhouette);
     this->NumberOfTestedEdges = numEdges;
   }
   else
@@ -320,14 +332,12 @@ int vtkLightSilhouetteFilter::RequestData(
     this->NumberOfTestedEdges =
       internals.Tree.Query(light, internals.Mesh.MaxPointNorm, silhouette);
     auto front = [&](std::int32_t face) { return internals.FaceFront(face, light); };
-    for (std::int32_t e : internals.Irregular)
-    {
-      if (internals.IsSilhouette(e, front))
-      {
-        append(silhouette, e, front(internals.Table.Faces[2 * e] >> 1));
-      }
-    }
-    this->NumberOfTestedEdges += static_cast<vtkIdType>(internals.Irregular.size());
+    const auto& irregular = internals.Irregular;
+    TestInBlocks(
+      static_cast<vtkIdType>(irregular.size()),
+      [&irregular](vtkIdType i) { return static_cast<vtkIdType>(irregular[i]); }, front, append,
+      internals, silhouette);
+    this->NumberOfTestedEdges += static_cast<vtkIdType>(irregular.size());
   }
   this->SearchTime =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - searchStart).count();
