@@ -24,6 +24,15 @@ namespace
 // Finds the first non-finite point and the largest |p|.
 struct CheckPoints
 {
+  // The exemplar matters: a default-constructed vtkSMPThreadLocal<double>
+  // leaves its values uninitialized with the Sequential backend.
+  CheckPoints(const TriangleMesh& mesh, vtkIdType numPoints)
+    : Mesh(mesh)
+    , FirstBad(numPoints)
+    , MaxNorm2(0.0)
+  {
+  }
+
   const TriangleMesh& Mesh;
   std::atomic<vtkIdType> FirstBad;
   vtkSMPThreadLocal<double> MaxNorm2;
@@ -289,7 +298,7 @@ bool ExtractTriangles(vtkPolyData* input, vtkAlgorithm* filter, TriangleMesh& me
     }
     mesh.DoublePoints = mesh.ConvertedPoints.data();
   }
-  CheckPoints check{ mesh, { numPoints }, {} };
+  CheckPoints check(mesh, numPoints);
   vtkSMPTools::For(0, numPoints, check);
   const vtkIdType bad = check.FirstBad.load();
   if (bad < numPoints)

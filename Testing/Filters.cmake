@@ -22,6 +22,12 @@ target_link_libraries(SoftShadowsFiltersCxxTests PRIVATE
 foreach (test IN LISTS filter_tests)
   add_test(NAME "Cxx.Filters.${test}" COMMAND SoftShadowsFiltersCxxTests ${test})
 endforeach ()
+# The silhouette searches once more on one thread: results must not depend on
+# the SMP backend (Debian's default is TBB).
+add_test(NAME "Cxx.Filters.TestLightSilhouetteFilter.Sequential"
+  COMMAND SoftShadowsFiltersCxxTests TestLightSilhouetteFilter)
+set_tests_properties("Cxx.Filters.TestLightSilhouetteFilter.Sequential" PROPERTIES
+  ENVIRONMENT "VTK_SMP_BACKEND_IN_USE=Sequential")
 
 set(filter_python_tests
   test_mesh_filters)
