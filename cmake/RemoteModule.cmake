@@ -13,14 +13,23 @@ softshadows_rendering_shaders(shader_sources shader_headers
   "${CMAKE_CURRENT_LIST_DIR}/../Rendering/glsl")
 
 list(TRANSFORM softshadows_filters_classes PREPEND "Module/")
+list(TRANSFORM softshadows_filters_private_classes PREPEND "Module/")
+list(TRANSFORM softshadows_filters_private_headers PREPEND "Module/")
+list(TRANSFORM softshadows_rendering_private_headers PREPEND "Rendering/")
 list(TRANSFORM softshadows_rendering_classes PREPEND "Rendering/")
 list(TRANSFORM softshadows_rendering_private_classes PREPEND "Rendering/"
   OUTPUT_VARIABLE private_classes)
 vtk_module_add_module(VTK::RenderingSoftShadows
   CLASSES ${softshadows_filters_classes} ${softshadows_rendering_classes}
   SOURCES ${shader_sources}
-  PRIVATE_CLASSES ${private_classes}
-  PRIVATE_HEADERS ${shader_headers} "${shim}")
+  PRIVATE_CLASSES ${private_classes} ${softshadows_filters_private_classes}
+  PRIVATE_HEADERS ${shader_headers} "${shim}" ${softshadows_filters_private_headers}
+    ${softshadows_rendering_private_headers})
 vtk_module_include(VTK::RenderingSoftShadows PRIVATE Module Rendering)
 vtk_module_find_package(PACKAGE glm)
-vtk_module_link(VTK::RenderingSoftShadows PRIVATE glm::glm)
+vtk_module_find_package(PACKAGE OpenMesh)
+vtk_module_link(VTK::RenderingSoftShadows PRIVATE glm::glm OpenMeshCore)
+if (CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
+  # Brute-force and tree silhouette searches must agree bit for bit.
+  vtk_module_compile_options(VTK::RenderingSoftShadows PRIVATE -ffp-contract=off)
+endif ()
