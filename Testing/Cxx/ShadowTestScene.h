@@ -50,19 +50,34 @@ inline vtkSmartPointer<vtkActor> AddActor(
   return actor;
 }
 
-/// Fills `renderer` and returns its spot light.
-inline vtkLight* Build(vtkRenderer* renderer, double lightRadius, double ballHeight = 1.0)
+/// The 6 x 6 ground on y = 0.
+inline void AddGround(vtkRenderer* renderer, int resolution = 4)
 {
   const double ground[3] = { 0.85, 0.85, 0.85 };
-  const double red[3] = { 0.9, 0.3, 0.25 };
-  const double blue[3] = { 0.3, 0.45, 0.9 };
-
   vtkNew<vtkPlaneSource> plane;
   plane->SetOrigin(-3, 0, -3);
   plane->SetPoint1(3, 0, -3);
   plane->SetPoint2(-3, 0, 3);
-  plane->SetResolution(4, 4);
+  plane->SetResolution(resolution, resolution);
   AddActor(renderer, plane, ground);
+}
+
+/// A `width` x `height` window showing `renderer`, rendered once.
+inline vtkSmartPointer<vtkRenderWindow> Show(vtkRenderer* renderer, int width, int height)
+{
+  auto window = vtkSmartPointer<vtkRenderWindow>::New();
+  window->SetSize(width, height);
+  window->AddRenderer(renderer);
+  window->Render();
+  return window;
+}
+
+/// Fills `renderer` and returns its spot light.
+inline vtkLight* Build(vtkRenderer* renderer, double lightRadius, double ballHeight = 1.0)
+{
+  const double red[3] = { 0.9, 0.3, 0.25 };
+  const double blue[3] = { 0.3, 0.45, 0.9 };
+  AddGround(renderer);
 
   vtkNew<vtkSphereSource> ball;
   ball->SetCenter(0, ballHeight, 0);
@@ -102,14 +117,8 @@ inline vtkLight* Build(vtkRenderer* renderer, double lightRadius, double ballHei
 /// towards the camera: contact-hardening shows at the fence's foot.
 inline vtkLight* BuildFence(vtkRenderer* renderer, double lightRadius)
 {
-  const double ground[3] = { 0.85, 0.85, 0.85 };
   const double wood[3] = { 0.72, 0.56, 0.38 };
-
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(-3, 0, -3);
-  plane->SetPoint1(3, 0, -3);
-  plane->SetPoint2(-3, 0, 3);
-  AddActor(renderer, plane, ground);
+  AddGround(renderer, 1);
 
   vtkNew<vtkFenceSource> fence;
   fence->SetNumberOfPickets(9);

@@ -41,10 +41,7 @@ int TestContactHardeningShadowPass(int argc, char* argv[])
   }
   renderer->SetPass(pass);
 
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(320, 240);
-  window->AddRenderer(renderer);
-  window->Render();
+  vtkSmartPointer<vtkRenderWindow> window = ShadowTestScene::Show(renderer, 320, 240);
 
   int result = vtkRegressionTestImage(window);
   return result == vtkRegressionTester::FAILED ? EXIT_FAILURE : EXIT_SUCCESS;

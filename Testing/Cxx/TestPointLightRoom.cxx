@@ -55,10 +55,7 @@ int TestPointLightRoom(int argc, char* argv[])
   vtkNew<vtkHardShadowPass> pass;
   pass->SetMapSize(256);
   renderer->SetPass(pass);
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(240, 180);
-  window->AddRenderer(renderer);
-  window->Render();
+  vtkSmartPointer<vtkRenderWindow> window = ShadowTestScene::Show(renderer, 240, 180);
 
   int result = vtkRegressionTestImage(window);
   return result == vtkRegressionTester::FAILED ? EXIT_FAILURE : EXIT_SUCCESS;

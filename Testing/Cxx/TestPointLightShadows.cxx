@@ -10,7 +10,6 @@
 #include "vtkLight.h"
 #include "vtkNew.h"
 #include "vtkOmnidirectionalShadowPass.h"
-#include "vtkPlaneSource.h"
 #include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -42,13 +41,8 @@ vtkLight* AddLight(vtkRenderer* renderer, double x, double y, double z, double c
 int TestPointLightShadows(int argc, char* argv[])
 {
   vtkNew<vtkRenderer> renderer;
-  const double ground[3] = { 0.85, 0.85, 0.85 };
   const double blue[3] = { 0.3, 0.45, 0.9 };
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(-3, 0, -3);
-  plane->SetPoint1(3, 0, -3);
-  plane->SetPoint2(-3, 0, 3);
-  ShadowTestScene::AddActor(renderer, plane, ground);
+  ShadowTestScene::AddGround(renderer, 1);
   vtkNew<vtkCubeSource> post;
   post->SetCenter(0, 0.6, 0);
   post->SetXLength(0.4);
@@ -81,10 +75,7 @@ int TestPointLightShadows(int argc, char* argv[])
   }
   pass->SetMapSize(512);
   renderer->SetPass(pass);
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(300, 240);
-  window->AddRenderer(renderer);
-  window->Render();
+  vtkSmartPointer<vtkRenderWindow> window = ShadowTestScene::Show(renderer, 300, 240);
   if (pass->GetNumberOfShadowedLights() != 3)
   {
     std::cerr << "expected 3 shadowed lights, got " << pass->GetNumberOfShadowedLights() << "\n";

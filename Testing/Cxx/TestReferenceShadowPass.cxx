@@ -17,10 +17,7 @@ int TestReferenceShadowPass(int argc, char* argv[])
   pass->SetNumberOfSamples(64);
   renderer->SetPass(pass);
 
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(320, 240);
-  window->AddRenderer(renderer);
-  window->Render();
+  vtkSmartPointer<vtkRenderWindow> window = ShadowTestScene::Show(renderer, 320, 240);
 
   int result = vtkRegressionTestImage(window);
   return result == vtkRegressionTester::FAILED ? EXIT_FAILURE : EXIT_SUCCESS;

@@ -49,10 +49,7 @@ int TestSoftShadowPassLights(int argc, char* argv[])
   pass->SetMapSize(512);
   renderer->SetPass(pass);
 
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(360, 200);
-  window->AddRenderer(renderer);
-  window->Render();
+  vtkSmartPointer<vtkRenderWindow> window = ShadowTestScene::Show(renderer, 360, 200);
   if (pass->GetNumberOfShadowedLights() != 2)
   {
     std::cerr << "expected 2 shadowed lights, got " << pass->GetNumberOfShadowedLights() << "\n";
