@@ -82,7 +82,6 @@ public:
   std::vector<Light>& GetLights() { return this->Lights; }
   const std::vector<Light>& GetLights() const { return this->Lights; }
   vtkRenderer* GetRenderer() const { return this->Renderer; }
-  const double* GetSceneBounds() const { return this->SceneBounds; }
 
   /**
    * The frustum of `light` seen from `eye` along `direction` (a sample of an

@@ -247,7 +247,6 @@ protected:
     Receivers      ///< final drawing with the shadow term
   };
   void SetStage(Stage stage);
-  Stage GetStage() const { return this->CurrentStage; }
 
   int MapSize = 1024;
   double SlopeScaledBias = 2.0;
