@@ -50,6 +50,36 @@ inline vtkSmartPointer<vtkActor> AddActor(
   return actor;
 }
 
+/// A positional scene light (a point light when `cone` >= 90) of radius
+/// `radius`, aimed at `focal`.
+inline vtkLight* AddLight(vtkRenderer* renderer, const double position[3], const double focal[3],
+  double cone, double radius, double intensity = 1.0)
+{
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPositional(true);
+  light->SetPosition(position[0], position[1], position[2]);
+  light->SetFocalPoint(focal[0], focal[1], focal[2]);
+  light->SetConeAngle(cone);
+  light->SetIntensity(intensity);
+  vtkSoftShadowPass::SetRadius(radius, light);
+  renderer->AddLight(light);
+  return light;
+}
+
+/// The camera at `position` looking at `focal`, y up, and the tests' background.
+inline void SetCamera(
+  vtkRenderer* renderer, const double position[3], const double focal[3], double viewAngle)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(position[0], position[1], position[2]);
+  camera->SetFocalPoint(focal[0], focal[1], focal[2]);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetViewAngle(viewAngle);
+  renderer->ResetCameraClippingRange();
+  renderer->SetBackground(0.1, 0.1, 0.12);
+}
+
 /// The 6 x 6 ground on y = 0.
 inline void AddGround(vtkRenderer* renderer, int resolution = 4)
 {
@@ -93,23 +123,13 @@ inline vtkLight* Build(vtkRenderer* renderer, double lightRadius, double ballHei
   box->SetZLength(0.6);
   AddActor(renderer, box, blue);
 
-  vtkNew<vtkLight> light;
-  light->SetLightTypeToSceneLight();
-  light->SetPositional(true);
-  light->SetPosition(1.5, 5.0, 1.0);
-  light->SetFocalPoint(0, 0, 0);
-  light->SetConeAngle(40);
-  light->SetColor(1, 1, 1);
-  vtkSoftShadowPass::SetRadius(lightRadius, light);
-  renderer->AddLight(light);
+  const double lightPosition[3] = { 1.5, 5.0, 1.0 };
+  const double origin[3] = { 0, 0, 0 };
+  vtkLight* light = AddLight(renderer, lightPosition, origin, 40, lightRadius);
 
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetPosition(0, 5.5, 7.5);
-  camera->SetFocalPoint(0, 0.3, 0);
-  camera->SetViewUp(0, 1, 0);
-  camera->SetViewAngle(35);
-  renderer->ResetCameraClippingRange();
-  renderer->SetBackground(0.1, 0.1, 0.12);
+  const double eye[3] = { 0, 5.5, 7.5 };
+  const double focal[3] = { 0, 0.3, 0 };
+  SetCamera(renderer, eye, focal, 35);
   return light;
 }
 
@@ -125,22 +145,13 @@ inline vtkLight* BuildFence(vtkRenderer* renderer, double lightRadius)
   fence->SetHeight(1.2);
   AddActor(renderer, fence, wood)->SetPosition(0, 0, -1.0);
 
-  vtkNew<vtkLight> light;
-  light->SetLightTypeToSceneLight();
-  light->SetPositional(true);
-  light->SetPosition(0.5, 4.0, -4.0);
-  light->SetFocalPoint(0, 0, 0.5);
-  light->SetConeAngle(40);
-  vtkSoftShadowPass::SetRadius(lightRadius, light);
-  renderer->AddLight(light);
+  const double lightPosition[3] = { 0.5, 4.0, -4.0 };
+  const double lightFocal[3] = { 0, 0, 0.5 };
+  vtkLight* light = AddLight(renderer, lightPosition, lightFocal, 40, lightRadius);
 
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetPosition(0, 4.5, 5.0);
-  camera->SetFocalPoint(0, 0.3, 0.2);
-  camera->SetViewUp(0, 1, 0);
-  camera->SetViewAngle(35);
-  renderer->ResetCameraClippingRange();
-  renderer->SetBackground(0.1, 0.1, 0.12);
+  const double eye[3] = { 0, 4.5, 5.0 };
+  const double focal[3] = { 0, 0.3, 0.2 };
+  SetCamera(renderer, eye, focal, 35);
   return light;
 }
 }

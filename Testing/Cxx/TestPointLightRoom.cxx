@@ -37,20 +37,13 @@ int TestPointLightRoom(int argc, char* argv[])
     ShadowTestScene::AddActor(renderer, box, colors[i]);
   }
 
-  vtkNew<vtkLight> light;
-  light->SetLightTypeToSceneLight();
-  light->SetPositional(true);
-  light->SetPosition(0, 0, 0);
-  light->SetFocalPoint(0, -1, 0);
-  light->SetConeAngle(180);
-  renderer->AddLight(light);
+  const double center[3] = { 0, 0, 0 };
+  const double down[3] = { 0, -1, 0 };
+  ShadowTestScene::AddLight(renderer, center, down, 180, 0.0);
 
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetPosition(-3.5, -3.5, 3.5);
-  camera->SetFocalPoint(1, 1, -1);
-  camera->SetViewUp(0, 1, 0);
-  camera->SetViewAngle(100);
-  renderer->ResetCameraClippingRange();
+  const double corner[3] = { -3.5, -3.5, 3.5 };
+  const double across[3] = { 1, 1, -1 };
+  ShadowTestScene::SetCamera(renderer, corner, across, 100);
 
   vtkNew<vtkHardShadowPass> pass;
   pass->SetMapSize(256);

@@ -21,23 +21,6 @@
 #include <cstring>
 #include <iostream>
 
-namespace
-{
-vtkLight* AddLight(vtkRenderer* renderer, double x, double y, double z, double cone, double radius)
-{
-  vtkNew<vtkLight> light;
-  light->SetLightTypeToSceneLight();
-  light->SetPositional(true);
-  light->SetPosition(x, y, z);
-  light->SetFocalPoint(0, 0, 0);
-  light->SetConeAngle(cone);
-  light->SetIntensity(0.5);
-  vtkSoftShadowPass::SetRadius(radius, light);
-  renderer->AddLight(light);
-  return light;
-}
-}
-
 int TestPointLightShadows(int argc, char* argv[])
 {
   vtkNew<vtkRenderer> renderer;
@@ -52,17 +35,14 @@ int TestPointLightShadows(int argc, char* argv[])
 
   const bool omni = argc > 1 && std::strcmp(argv[1], "omni") == 0;
   const double radius = omni ? 0.1 : 0.0;
-  AddLight(renderer, 2.0, 1.5, 0.0, 180.0, radius);  // point: shadow towards -x
-  AddLight(renderer, 0.0, 1.5, 2.0, 180.0, radius);  // point: shadow towards -z
-  AddLight(renderer, -3.0, 3.0, -3.0, 40.0, radius); // spot: shadow towards +x +z
+  const double origin[3] = { 0, 0, 0 };
+  const double lights[3][3] = { { 2.0, 1.5, 0.0 }, { 0.0, 1.5, 2.0 }, { -3.0, 3.0, -3.0 } };
+  ShadowTestScene::AddLight(renderer, lights[0], origin, 180, radius, 0.5); // point: towards -x
+  ShadowTestScene::AddLight(renderer, lights[1], origin, 180, radius, 0.5); // point: towards -z
+  ShadowTestScene::AddLight(renderer, lights[2], origin, 40, radius, 0.5);  // spot: towards +x +z
 
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetPosition(3, 6, 4);
-  camera->SetFocalPoint(0, 0, 0);
-  camera->SetViewUp(0, 1, 0);
-  camera->SetViewAngle(40);
-  renderer->ResetCameraClippingRange();
-  renderer->SetBackground(0.1, 0.1, 0.12);
+  const double eye[3] = { 3, 6, 4 };
+  ShadowTestScene::SetCamera(renderer, eye, origin, 40);
 
   vtkSmartPointer<vtkSoftShadowPass> pass;
   if (omni)
