@@ -17,6 +17,7 @@ namespace
 // Leaves of 8 to 16 edges: testing a leaf's edges (contiguous in memory) costs
 // less than one more level of nodes (a cache miss each).
 constexpr std::int32_t LeafSize = 16;
+static_assert(2 * LeafSize <= 256, "a leaf's faces are numbered in a byte");
 // The top levels of the tree are split serially, into up to 2^SerialDepth
 // subtrees that are then built in parallel.
 constexpr int SerialDepth = 5;
@@ -158,7 +159,10 @@ void NormalConeTree::Build(const RawVector<Edge>& edges, const RawVector<double>
   const double* normals, const double* offsets)
 {
   this->Nodes.clear();
-  this->Edges.clear();
+  this->LeafPlanes.clear();
+  this->LeafFaces.clear();
+  this->EdgeFaces.clear();
+  this->EdgeOutputs.clear();
   this->Planes.clear();
   const vtkIdType numEdges = static_cast<vtkIdType>(edges.size());
   if (numEdges == 0)
@@ -286,31 +290,63 @@ void NormalConeTree::Build(const RawVector<Edge>& edges, const RawVector<double>
     appendSubtree(-root - 1);
   }
 
-  // Edges in tree order, and the planes of their faces numbered in the order
-  // the edges first meet them: a leaf's faces are neighbours in memory.
+  // What the leaves read, leaf by leaf in tree order: for each edge two
+  // bytes, its faces among its leaf's; for each leaf the float planes of its
+  // faces, together in memory; the exact planes only for the rare faces the
+  // float test cannot decide, and ids and points only for silhouette edges.
   std::int32_t maxFace = 0;
   for (const Edge& edge : edges)
   {
     maxFace = std::max({ maxFace, edge.Faces[0], edge.Faces[1] });
   }
-  RawVector<std::int32_t> local(static_cast<std::size_t>(maxFace) + 1);
-  std::fill(local.begin(), local.end(), -1);
-  this->Edges.resize(numEdges);
-  this->Planes.reserve(4 * (static_cast<std::size_t>(maxFace) + 1));
-  for (vtkIdType i = 0; i < numEdges; ++i)
+  const std::size_t numFaces = static_cast<std::size_t>(maxFace) + 1;
+  this->Planes.resize(4 * numFaces);
+  this->MaxOffset = 0.0;
+  for (std::size_t f = 0; f < numFaces; ++f)
   {
-    Edge edge = edges[builder.Order[i]];
-    for (std::int32_t& f : edge.Faces)
+    std::copy_n(normals + 3 * f, 3, this->Planes.data() + 4 * f);
+    this->Planes[4 * f + 3] = offsets[f];
+    this->MaxOffset = std::max(this->MaxOffset, std::abs(offsets[f]));
+  }
+  this->EdgeFaces.resize(2 * numEdges);
+  this->EdgeOutputs.resize(3 * numEdges);
+  this->LeafPlanes.clear();
+  this->LeafFaces.clear();
+  RawVector<std::int32_t> local(numFaces);
+  std::fill(local.begin(), local.end(), -1);
+  for (Node& node : this->Nodes)
+  {
+    if (node.Right >= 0)
     {
-      if (local[f] < 0)
-      {
-        local[f] = static_cast<std::int32_t>(this->Planes.size() / 4);
-        const double* n = normals + 3 * static_cast<vtkIdType>(f);
-        this->Planes.insert(this->Planes.end(), { n[0], n[1], n[2], offsets[f] });
-      }
-      f = local[f];
+      continue;
     }
-    this->Edges[i] = edge;
+    const std::int32_t first = static_cast<std::int32_t>(this->LeafFaces.size());
+    node.Right = -1 - first;
+    for (std::int32_t i = node.Begin; i < node.End; ++i)
+    {
+      const Edge& edge = edges[builder.Order[i]];
+      for (int k = 0; k < 2; ++k)
+      {
+        const std::int32_t f = edge.Faces[k];
+        if (local[f] < 0)
+        {
+          local[f] = static_cast<std::int32_t>(this->LeafFaces.size()) - first;
+          this->LeafFaces.push_back(f);
+          for (int c = 0; c < 4; ++c)
+          {
+            this->LeafPlanes.push_back(static_cast<float>(this->Planes[4 * f + c]));
+          }
+        }
+        this->EdgeFaces[2 * i + k] = static_cast<std::uint8_t>(local[f]);
+      }
+      this->EdgeOutputs[3 * i] = edge.Id;
+      this->EdgeOutputs[3 * i + 1] = edge.Points[0];
+      this->EdgeOutputs[3 * i + 2] = edge.Points[1];
+    }
+    for (std::size_t j = static_cast<std::size_t>(first); j < this->LeafFaces.size(); ++j)
+    {
+      local[this->LeafFaces[j]] = -1;
+    }
   }
 }
 
@@ -355,44 +391,103 @@ vtkIdType NormalConeTree::Query(
     return 0;
   }
   const double tolerance = Tolerance(light, scale);
-  const double* planes = this->Planes.data();
 
-  // Visits the subtree under `root`, testing the edges of the leaves it reaches.
-  auto visit = [&](std::int32_t root, std::vector<std::int32_t>& out,
-                 std::vector<std::int32_t>& stack) -> vtkIdType
+  // Which side of the light a face is on: in float, and again in double, as
+  // the brute-force search does, only where the float result is within its
+  // round-off bound of zero. Each float product and sum errs by at most 2^-24
+  // times the sum of the terms' magnitudes (and rounding n, d and L to float
+  // by as much again): 7 such errors at most; 16 leaves a margin. Both
+  // searches therefore take the same decision for every face.
+  const float lightF[4] = { static_cast<float>(light[0]), static_cast<float>(light[1]),
+    static_cast<float>(light[2]), static_cast<float>(light[3]) };
+  const float bound = static_cast<float>(16.0 * std::ldexp(1.0, -24) *
+      (std::abs(light[0]) + std::abs(light[1]) + std::abs(light[2]) +
+        std::abs(light[3]) * this->MaxOffset) +
+    1e-30);
+  const double* exactPlanes = this->Planes.data();
+  const std::int32_t* leafFaces = this->LeafFaces.data();
+  auto front = [&](const float* p, std::int32_t entry)
   {
-    vtkIdType tested = 0;
-    stack.clear();
-    stack.push_back(root);
-    while (!stack.empty())
+    const float g = p[0] * lightF[0] + p[1] * lightF[1] + p[2] * lightF[2] - lightF[3] * p[3];
+    if (std::abs(g) > bound)
     {
-      const std::int32_t index = stack.back();
-      stack.pop_back();
-      const Node& node = this->Nodes[index];
-      if (OneSided(node, light, tolerance))
+      return g > 0.0f;
+    }
+    const double* exact = exactPlanes + 4 * static_cast<vtkIdType>(leafFaces[entry]);
+    return FacesLight(exact, exact[3], light);
+  };
+
+  // Visits the subtree under `root` level by level, then tests the edges of
+  // the leaves reached. The walk is bound by memory latency: each level asks
+  // for all the nodes of the next (and the data of every leaf reached) to be
+  // fetched before it looks at any, so that many fetches are in flight
+  // instead of one at a time.
+  const float* leafPlanes = this->LeafPlanes.data();
+  const std::uint8_t* edgeFaces = this->EdgeFaces.data();
+  const std::int32_t* edgeOutputs = this->EdgeOutputs.data();
+  const Node* nodes = this->Nodes.data();
+  struct Lists
+  {
+    std::vector<std::int32_t> Level, Next, Leaves;
+  };
+  auto visit = [&](std::int32_t root, std::vector<std::int32_t>& out, Lists& lists) -> vtkIdType
+  {
+    std::vector<std::int32_t>& level = lists.Level;
+    std::vector<std::int32_t>& next = lists.Next;
+    std::vector<std::int32_t>& reached = lists.Leaves;
+    level.assign(1, root);
+    reached.clear();
+    while (!level.empty())
+    {
+      next.clear();
+      for (std::int32_t index : level)
       {
-        continue;
+        const Node& node = nodes[index];
+        if (OneSided(node, light, tolerance))
+        {
+          continue;
+        }
+        if (node.Right >= 0)
+        {
+          __builtin_prefetch(nodes + index + 1);
+          __builtin_prefetch(nodes + node.Right);
+          next.push_back(index + 1);
+          next.push_back(node.Right);
+          continue;
+        }
+        // A leaf of n edges has about n faces (16 bytes each), 2 n bytes of
+        // edges and 12 n bytes of outputs.
+        const float* planes = leafPlanes + 4 * static_cast<vtkIdType>(-1 - node.Right);
+        for (std::int32_t i = 0; i < node.End - node.Begin + 4; i += 4)
+        {
+          __builtin_prefetch(planes + 4 * i);
+        }
+        __builtin_prefetch(edgeFaces + 2 * static_cast<vtkIdType>(node.Begin));
+        for (std::int32_t i = node.Begin; i < node.End + 5; i += 5)
+        {
+          __builtin_prefetch(edgeOutputs + 3 * static_cast<vtkIdType>(i));
+        }
+        reached.push_back(index);
       }
-      if (node.Right >= 0)
-      {
-        // The walk waits on memory, not arithmetic: fetch the right child
-        // while the left one (next in memory) is looked at.
-        __builtin_prefetch(this->Nodes.data() + node.Right);
-        stack.push_back(node.Right);
-        stack.push_back(index + 1);
-        continue;
-      }
+      level.swap(next);
+    }
+    vtkIdType tested = 0;
+    for (std::int32_t leaf : reached)
+    {
+      const Node& node = nodes[leaf];
+      const std::int32_t first = -1 - node.Right;
+      const float* planes = leafPlanes + 4 * static_cast<vtkIdType>(first);
       for (std::int32_t i = node.Begin; i < node.End; ++i)
       {
-        const Edge& edge = this->Edges[i];
-        const double* p0 = planes + 4 * static_cast<vtkIdType>(edge.Faces[0]);
-        const double* p1 = planes + 4 * static_cast<vtkIdType>(edge.Faces[1]);
-        const bool front = FacesLight(p0, p0[3], light);
-        if (front != FacesLight(p1, p1[3], light))
+        const std::int32_t f0 = edgeFaces[2 * static_cast<vtkIdType>(i)];
+        const std::int32_t f1 = edgeFaces[2 * static_cast<vtkIdType>(i) + 1];
+        const bool toward = front(planes + 4 * f0, first + f0);
+        if (toward != front(planes + 4 * f1, first + f1))
         {
-          out.push_back(edge.Id);
-          out.push_back(edge.Points[front ? 0 : 1]);
-          out.push_back(edge.Points[front ? 1 : 0]);
+          const std::int32_t* edge = edgeOutputs + 3 * static_cast<vtkIdType>(i);
+          out.push_back(edge[0]);
+          out.push_back(edge[toward ? 1 : 2]);
+          out.push_back(edge[toward ? 2 : 1]);
         }
       }
       tested += node.End - node.Begin;
@@ -400,14 +495,14 @@ vtkIdType NormalConeTree::Query(
     return tested;
   };
 
-  std::vector<std::int32_t> stack;
   if (this->GetNumberOfEdges() < SerialBelowEdges)
   {
-    return visit(0, silhouette, stack);
+    Lists lists;
+    return visit(0, silhouette, lists);
   }
 
   // The top of the tree, breadth first, until there are enough subtrees to
-  // share among threads; then each subtree depth first.
+  // share among threads; then each subtree as above.
   std::vector<std::int32_t> queue{ 0 };
   std::vector<std::int32_t> frontier;
   std::size_t head = 0;
@@ -433,14 +528,14 @@ vtkIdType NormalConeTree::Query(
   // does not depend on how threads share the subtrees.
   std::vector<std::vector<std::int32_t>> found(frontier.size());
   std::vector<vtkIdType> tested(frontier.size(), 0);
-  vtkSMPThreadLocal<std::vector<std::int32_t>> stacks;
+  vtkSMPThreadLocal<Lists> lists;
   vtkSMPTools::For(0, static_cast<vtkIdType>(frontier.size()), 1,
     [&](vtkIdType begin, vtkIdType end)
     {
-      std::vector<std::int32_t>& localStack = stacks.Local();
+      Lists& local = lists.Local();
       for (vtkIdType i = begin; i < end; ++i)
       {
-        tested[i] = visit(frontier[i], found[i], localStack);
+        tested[i] = visit(frontier[i], found[i], local);
       }
     });
   vtkIdType total = 0;

@@ -20,8 +20,15 @@
  * a leaf, its edges, with the exact test) are visited.
  *
  * The bounds are conservative with a margin far above round-off (see
- * Tolerance()), and the leaves use FacesLight() exactly as the brute-force
- * search does, so both searches return the same edges, bit for bit.
+ * Tolerance()). The leaves decide each face in float, from a copy of its
+ * plane stored with the leaf, and fall back to FacesLight() in double, as the
+ * brute-force search tests every face, wherever float round-off could change
+ * the sign: both searches return the same edges, bit for bit.
+ *
+ * The search is bound by memory latency, not arithmetic: it walks the tree a
+ * level at a time, asking for every node of the next level and every leaf's
+ * data to be fetched before looking at any, and a leaf reads 16 bytes a face
+ * and 2 an edge (ids and points only for silhouette edges).
  *
  * Not installed, not wrapped.
  */
@@ -32,7 +39,7 @@
 #include "vtkSoftShadowsLargeBuffers.h" // for RawVector
 #include "vtkType.h"
 
-#include <cstdint> // for std::int32_t
+#include <cstdint> // for std::int32_t, std::uint8_t
 #include <vector>  // for std::vector
 
 namespace vtksoftshadows
@@ -62,7 +69,7 @@ public:
    * Builds the tree over `edges`, given every face's unit normal (3 a face)
    * and plane offset, and each edge's midpoint (3 an edge, in the order of
    * `edges`). The tree keeps its own copy of the planes of the faces it uses,
-   * in tree order, so that a leaf's faces sit together in memory.
+   * and each leaf a float copy of its faces' planes.
    */
   void Build(const RawVector<Edge>& edges, const RawVector<double>& midpoints,
     const double* normals, const double* offsets);
@@ -79,7 +86,10 @@ public:
   vtkIdType Query(const double light[4], double scale, std::vector<std::int32_t>& silhouette) const;
 
   vtkIdType GetNumberOfNodes() const { return static_cast<vtkIdType>(this->Nodes.size()); }
-  vtkIdType GetNumberOfEdges() const { return static_cast<vtkIdType>(this->Edges.size()); }
+  vtkIdType GetNumberOfEdges() const
+  {
+    return static_cast<vtkIdType>(this->EdgeOutputs.size() / 3);
+  }
 
   /// Margin that covers the round-off of the bounds against the exact test.
   static double Tolerance(const double light[4], double scale);
@@ -96,9 +106,9 @@ private:
     float Center[3];
     float OffsetMin; // range of d_f - n_f . Center over the node's faces
     float OffsetMax;
-    std::int32_t Begin; // the node's edges: Edges[Begin] .. Edges[End - 1]
+    std::int32_t Begin; // the node's edges, Begin .. End - 1 in tree order
     std::int32_t End;
-    std::int32_t Right; // right child (the left one follows the node); -1 in a leaf
+    std::int32_t Right; // right child (the left one follows the node); < 0 in a leaf
   };
 
   // True when the bounds prove all of the node's faces on one side of the light.
@@ -106,8 +116,14 @@ private:
   struct Builder;
 
   RawVector<Node> Nodes;
-  RawVector<Edge> Edges;    // in tree order, faces numbered as in Planes
-  RawVector<double> Planes; // n.x n.y n.z d a face, in tree order
+  // Leaf data, leaf by leaf in tree order (a leaf's Right is -1 minus the
+  // index of its first face in LeafFaces).
+  RawVector<float> LeafPlanes;         // n.x n.y n.z d a leaf's face, rounded to float
+  RawVector<std::int32_t> LeafFaces;   // the face, into Planes
+  RawVector<std::uint8_t> EdgeFaces;   // 2 an edge: its faces among its leaf's
+  RawVector<std::int32_t> EdgeOutputs; // 3 an edge: id, points as its first face runs it
+  RawVector<double> Planes;            // n.x n.y n.z d a face, exact
+  double MaxOffset = 0.0;              // largest |d| over the faces
 };
 }
 

@@ -250,6 +250,56 @@ void CompareMethods(
     label + ": brute force tests every edge");
 }
 
+// Lights in the planes of faces (directional: along the face; positional: at
+// a point of its plane), where the sign of a face's test is decided by
+// round-off: the tree's float test must leave those faces to the exact one,
+// and give the same lines as brute force.
+void CompareGrazing(vtkPolyData* mesh, int lights, unsigned seed, const std::string& label)
+{
+  vtkNew<vtkLightSilhouetteFilter> brute;
+  brute->SetInputData(mesh);
+  brute->SetMethodToBruteForce();
+  vtkNew<vtkLightSilhouetteFilter> tree;
+  tree->SetInputData(mesh);
+  std::mt19937 random(seed);
+  std::uniform_int_distribution<vtkIdType> anyCell(0, mesh->GetNumberOfCells() - 1);
+  std::uniform_real_distribution<double> uniform(-2.0, 2.0);
+  int differences = 0, tested = 0;
+  for (int i = 0; i < lights; ++i)
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    mesh->GetCellPoints(anyCell(random), n, ids);
+    if (n != 3)
+    {
+      continue;
+    }
+    double p[3][3];
+    for (int k = 0; k < 3; ++k)
+    {
+      mesh->GetPoint(ids[k], p[k]);
+    }
+    const double a = uniform(random), b = uniform(random);
+    const bool positional = i % 2 == 1;
+    double light[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      const double along = a * (p[1][c] - p[0][c]) + b * (p[2][c] - p[0][c]);
+      light[c] = positional ? p[0][c] + along : along;
+    }
+    for (vtkLightSilhouetteFilter* filter : { brute.GetPointer(), tree.GetPointer() })
+    {
+      filter->SetLightPosition(light);
+      filter->SetPositional(positional);
+      filter->Update();
+    }
+    differences += Lines(brute) != Lines(tree) ? 1 : 0;
+    ++tested;
+  }
+  MESH_CHECK(tested > lights / 2, label + ": grazing lights tried");
+  MESH_CHECK_EQUAL(differences, 0, label + ": grazing lights where brute force and tree differ");
+}
+
 vtkSmartPointer<vtkPolyData> Triangulated(vtkAlgorithm* source)
 {
   vtkNew<vtkTriangleFilter> triangles;
@@ -370,6 +420,7 @@ void TestPruning()
       std::to_string(filter->GetNumberOfTestedEdges()) + " of " +
       std::to_string(filter->GetNumberOfEdges()) + ")");
   CompareMethods(mesh, 24, 7, "large sphere", false);
+  CompareGrazing(mesh, 24, 9, "large sphere");
 }
 }
 
@@ -416,9 +467,11 @@ int TestLightSilhouetteFilter(int, char*[])
     vtkNew<vtkFenceSource> fence;
     fence->Update();
     CompareMethods(fence->GetOutput(), 24, 4, "fence");
+    CompareGrazing(fence->GetOutput(), 24, 10, "fence");
   }
   CompareMethods(Moebius(200), 24, 5, "Moebius strip, 200 segments");
   CompareMethods(Grid(30, 20, 0.4), 24, 6, "roof");
+  CompareGrazing(Grid(30, 20, 0.4), 24, 11, "roof");
   CompareMethods(DamagedSphere(8), 24, 8, "damaged sphere");
   TestPruning();
 
