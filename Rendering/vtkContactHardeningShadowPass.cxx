@@ -454,5 +454,6 @@ void vtkContactHardeningShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DilationSize: " << this->DilationSize << "\n";
   os << indent << "UmbraEarlyOut: " << this->UmbraEarlyOut << "\n";
   os << indent << "EarlyOutKernelSize: " << this->EarlyOutKernelSize << "\n";
+  os << indent << "ResolutionDivisor: " << this->ResolutionDivisor << "\n";
   os << indent << "DebugView: " << this->DebugView << "\n";
 }

@@ -18,6 +18,7 @@
 
 #include "vtkShadowScreenCommonFS.h"
 
+#include <algorithm> // for std::max
 #include <string>
 
 vtkShadowScreenBuffers::vtkShadowScreenBuffers() = default;
@@ -37,7 +38,10 @@ bool vtkShadowScreenBuffers::RenderCameraDepth(const vtkRenderState* s, vtkSoftS
     this->ReleaseGraphicsResources(this->Context);
     this->Context = context;
   }
-  renderer->GetTiledSizeAndOrigin(&this->Width, &this->Height, this->Origin, this->Origin + 1);
+  renderer->GetTiledSizeAndOrigin(
+    this->ViewportSize, this->ViewportSize + 1, this->Origin, this->Origin + 1);
+  this->Width = (this->ViewportSize[0] + this->Divisor - 1) / this->Divisor;
+  this->Height = (this->ViewportSize[1] + this->Divisor - 1) / this->Divisor;
 
   if (!this->CameraDepth)
   {
@@ -57,6 +61,7 @@ bool vtkShadowScreenBuffers::RenderCameraDepth(const vtkRenderState* s, vtkSoftS
 
   // Clip to world for this frame's camera and aspect ratio.
   vtkCamera* camera = renderer->GetActiveCamera();
+  camera->GetPosition(this->CameraPosition);
   vtkNew<vtkMatrix4x4> clipToWorld;
   vtkMatrix4x4::Multiply4x4(
     camera->GetProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1, 1),
@@ -109,6 +114,7 @@ void vtkShadowScreenBuffers::DrawQuad(vtkOpenGLQuadHelper* quad,
   this->CameraDepth->Activate();
   quad->Program->SetUniformi("vtkScreenDepth", this->CameraDepth->GetTextureUnit());
   quad->Program->SetUniformMatrix4x4("vtkScreenClipToWorld", this->ClipToWorld);
+  quad->Program->SetUniform3f("vtkScreenCameraPosition", this->CameraPosition);
   setUniforms(quad->Program);
   quad->Render();
   this->CameraDepth->Deactivate();
@@ -125,10 +131,10 @@ void vtkShadowScreenBuffers::BeginVisibility(int slot, float clear)
     texture->SetMagnificationFilter(vtkTextureObject::Nearest);
     texture->SetWrapS(vtkTextureObject::ClampToEdge);
     texture->SetWrapT(vtkTextureObject::ClampToEdge);
-    texture->SetInternalFormat(GL_R32F);
-    texture->SetFormat(GL_RED);
+    texture->SetInternalFormat(GL_RGBA32F);
+    texture->SetFormat(GL_RGBA);
     texture->SetDataType(GL_FLOAT);
-    texture->Allocate2D(this->Width, this->Height, 1, VTK_FLOAT);
+    texture->Allocate2D(this->Width, this->Height, 4, VTK_FLOAT);
     this->Visibility.push_back(texture);
   }
   if (!this->Framebuffer)
@@ -143,7 +149,7 @@ void vtkShadowScreenBuffers::BeginVisibility(int slot, float clear)
   this->Framebuffer->ActivateDrawBuffers(1);
   state->vtkglViewport(0, 0, this->Width, this->Height);
   state->vtkglScissor(0, 0, this->Width, this->Height);
-  state->vtkglClearColor(clear, clear, clear, clear);
+  state->vtkglClearColor(clear, 0.0f, 0.0f, 0.0f);
   state->vtkglClear(GL_COLOR_BUFFER_BIT);
 }
 
@@ -157,7 +163,6 @@ void vtkShadowScreenBuffers::EndVisibility()
 //------------------------------------------------------------------------------
 void vtkShadowScreenBuffers::ActivateTextures()
 {
-  this->CameraDepth->Activate();
   for (auto& texture : this->Visibility)
   {
     texture->Activate();
@@ -167,7 +172,6 @@ void vtkShadowScreenBuffers::ActivateTextures()
 //------------------------------------------------------------------------------
 void vtkShadowScreenBuffers::DeactivateTextures()
 {
-  this->CameraDepth->Deactivate();
   for (auto& texture : this->Visibility)
   {
     texture->Deactivate();
@@ -177,9 +181,13 @@ void vtkShadowScreenBuffers::DeactivateTextures()
 //------------------------------------------------------------------------------
 void vtkShadowScreenBuffers::SetUniforms(vtkShaderProgram* program, int numberOfLights) const
 {
-  program->SetUniformi("vtkShadowCameraDepth", this->CameraDepth->GetTextureUnit());
   float origin[2] = { static_cast<float>(this->Origin[0]), static_cast<float>(this->Origin[1]) };
   program->SetUniform2f("vtkShadowViewportOrigin", origin);
+  // Viewport pixels to buffer texels.
+  float scale[2] = { static_cast<float>(this->Width) / std::max(this->ViewportSize[0], 1),
+    static_cast<float>(this->Height) / std::max(this->ViewportSize[1], 1) };
+  program->SetUniform2f("vtkShadowScreenScale", scale);
+  program->SetUniform3f("vtkShadowCameraPosition", this->CameraPosition);
   for (int i = 0; i < numberOfLights && i < static_cast<int>(this->Visibility.size()); ++i)
   {
     const std::string name = "vtkShadowScreen[" + std::to_string(i) + "]";

@@ -37,6 +37,12 @@ public:
   ~vtkShadowScreenBuffers();
 
   /**
+   * Buffers are the viewport's size divided by this on each axis (rounded
+   * up). Default 1.
+   */
+  void SetResolutionDivisor(int divisor) { this->Divisor = divisor < 1 ? 1 : divisor; }
+
+  /**
    * Size the buffers to the renderer's viewport and draw the depth of its
    * opaque props through its camera.
    */
@@ -73,8 +79,12 @@ public:
     const std::function<void(vtkShaderProgram*)>& setUniforms, QuadMask mask = QuadMask::None);
 
   /**
-   * Draw into light `slot`'s visibility texture (allocated on demand,
-   * single-channel float, viewport-sized). Clears it to `clear` first.
+   * Draw into light `slot`'s visibility texture (allocated on demand, the
+   * buffers' size). A texel holds r = visibility (1 lit, 0 umbra), g = 1
+   * where r is valid and 0 where receivers should keep their own hard
+   * shadow, b = the camera distance of the surface it belongs to (receivers
+   * use only texels of their own surface). Float, cleared to (clear, 0, 0, 0)
+   * first.
    */
   void BeginVisibility(int slot, float clear);
   void EndVisibility();
@@ -90,8 +100,11 @@ public:
 
 private:
   vtkOpenGLRenderWindow* Context = nullptr;
-  int Width = 0;
+  int Divisor = 1;
+  int Width = 0; // the buffers', Divisor times smaller than the viewport
   int Height = 0;
+  int ViewportSize[2] = { 0, 0 };
+  double CameraPosition[3] = { 0.0, 0.0, 0.0 };
   int Origin[2] = { 0, 0 };
   float ClipToWorld[16];
   vtkSmartPointer<vtkTextureObject> CameraDepth;

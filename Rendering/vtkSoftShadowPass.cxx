@@ -188,6 +188,7 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   }
   if (drawn && this->UsesScreenSpace())
   {
+    this->Screen->SetResolutionDivisor(this->GetScreenResolutionDivisor());
     drawn = this->Screen->RenderCameraDepth(s, this) && this->RenderScreenSpace(s);
   }
   if (!drawn)
@@ -318,10 +319,8 @@ std::string vtkSoftShadowPass::GetVisibilityExpression(int slot)
       "vtkShadowPCFRadius)";
   if (this->UsesScreenSpace())
   {
-    // The ternary evaluates only one side: hard lookups for the few
-    // fragments the screen does not cover.
-    return "(vtkShadowOnScreenSurface() ? vtkShadowScreenValue(vtkShadowScreen[" + i +
-      "]) : " + hard + ")";
+    return "vtkShadowScreenVisibility(vtkShadowScreen[" + i + "], vtkShadowPositionWC, " + hard +
+      ")";
   }
   return hard;
 }

@@ -195,10 +195,19 @@ protected:
   /**
    * Step 3, optional: screen-space passes. Techniques that override it return
    * true from UsesScreenSpace() and write one visibility texture per light in
-   * this->Screen. Default: nothing.
+   * this->Screen (see vtkShadowScreenBuffers::BeginVisibility()). Default:
+   * nothing.
    */
   virtual bool RenderScreenSpace(const vtkRenderState*) { return true; }
   virtual bool UsesScreenSpace() const { return false; }
+
+  /**
+   * Screen-space passes run on buffers this many times smaller than the
+   * viewport on each axis; receivers upsample the result, following
+   * surfaces, and keep their own full-resolution hard shadow where the
+   * screen-space pass left a pixel alone. Default 1.
+   */
+  virtual int GetScreenResolutionDivisor() const { return 1; }
 
   /**
    * Whether the technique shadows point lights (cube maps). Default false.
@@ -215,7 +224,8 @@ protected:
    * GLSL expression for the visibility (1 lit, 0 umbra) of shadowed light
    * `slot` at `vtkShadowPositionWC`. Default: the framework's hard lookup in
    * the light's depth map with GetPCFRadius(), or, when UsesScreenSpace(),
-   * the light's screen-space visibility texture.
+   * the light's screen-space visibility texture, upsampled, where it holds a
+   * value for the fragment's surface, and that hard lookup elsewhere.
    */
   virtual std::string GetVisibilityExpression(int slot);
 

@@ -253,6 +253,12 @@ const std::vector<Technique>& Techniques()
           Range::Between(1, 255), "early-out neighbourhood in pixels (above max_kernel)",
           &vtkContactHardeningShadowPass::SetEarlyOutKernelSize,
           &vtkContactHardeningShadowPass::GetEarlyOutKernelSize),
+        Bind<vtkContactHardeningShadowPass, int>("resolution_divisor", ValueType::Integer,
+          Range::Between(1, 4),
+          "screen-space passes on buffers this many times smaller than the window on each axis; "
+          "kernel sizes count their pixels",
+          &vtkContactHardeningShadowPass::SetResolutionDivisor,
+          &vtkContactHardeningShadowPass::GetResolutionDivisor),
         Bind<vtkContactHardeningShadowPass, bool>("debug_view", ValueType::Boolean, Range::Any(),
           "mark umbra (grey) and penumbra (dark) as in the paper's figure 4",
           &vtkContactHardeningShadowPass::SetDebugView,

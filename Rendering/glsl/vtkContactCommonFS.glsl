@@ -1,7 +1,7 @@
 // Shared by the contact-hardening passes (after vtkShadowScreenCommonFS).
 // A contact map texel holds r = S (1 shadowed, 0 lit), g = D (the kernel
-// control; <= 0: not blurred) and b = the surface's distance to the camera
-// (0 on background).
+// control; <= 0: not blurred), b = the surface's distance to the camera (0 on
+// background) and a = 1 once a blur will touch or has touched the pixel.
 uniform sampler2D contactMap;
 uniform float contactDepthTolerance;
 uniform bool contactDebugView;
@@ -28,4 +28,14 @@ float vtkContactVisibility(float s)
     return s <= 0.001 ? 1.0 : (s >= 0.999 ? 0.5 : 0.1);
   }
   return 1.0 - s;
+}
+
+// Pass 5's texel for the receivers (vtkShadowScreenBuffers::BeginVisibility):
+// the visibility, valid where a blur reached (elsewhere receivers keep their
+// own full-resolution hard shadow; the debug view marks every surface), and
+// the surface's camera distance.
+vec4 vtkContactOutput(vec4 c, float s)
+{
+  bool valid = contactDebugView ? c.b > 0.0 : c.a > 0.5;
+  return vec4(vtkContactVisibility(s), valid ? 1.0 : 0.0, c.b, 0.0);
 }

@@ -29,5 +29,5 @@ void main()
     }
     s = sum / weights;
   }
-  gl_FragData[0] = lastPass ? vec4(vtkContactVisibility(s)) : vec4(s, c.gba);
+  gl_FragData[0] = lastPass ? vtkContactOutput(c, s) : vec4(s, c.gba);
 }

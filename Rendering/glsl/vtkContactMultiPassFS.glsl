@@ -27,5 +27,5 @@ void main()
       weights += taps[i].z;
     }
   }
-  gl_FragData[0] = vec4(sum / weights, max(c.g - 1.0, 0.0), c.b, 0.0);
+  gl_FragData[0] = vec4(sum / weights, max(c.g - 1.0, 0.0), c.b, c.a);
 }

@@ -26,5 +26,5 @@ void main()
     }
     s = sum / count;
   }
-  gl_FragData[0] = vec4(vtkContactVisibility(s));
+  gl_FragData[0] = vtkContactOutput(c, s);
 }

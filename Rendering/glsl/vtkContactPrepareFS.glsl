@@ -41,7 +41,7 @@ void main()
     for (int i = 0; i < min(tapCount, 8); ++i)
     {
       vec4 t = vtkContactFetch(pixel + ivec2(round(taps[i].xy * 0.5 * dilationSize)));
-      if (t.g > 0.0 && vtkContactSameSurface(c, t))
+      if (t.r > 0.0 && vtkContactSameSurface(c, t))
       {
         sum += taps[i].z * t.g;
         weights += taps[i].z;
@@ -49,7 +49,10 @@ void main()
     }
     d = weights > 0.0 ? sum / weights : 0.0;
   }
-  vec4 result = vec4(c.r, d, c.b, 0.0);
+  // Below one (a pass, a pixel) a blur changes nothing worth the pixel's
+  // sharper full-resolution hard shadow in the receivers.
+  d = d >= 1.0 ? d : 0.0;
+  vec4 result = vec4(c.r, d, c.b, d > 0.0 ? 1.0 : 0.0);
   gl_FragData[0] = result;
   gl_FragData[1] = result;
   gl_FragDepth = d > 0.0 ? 0.0 : 1.0;

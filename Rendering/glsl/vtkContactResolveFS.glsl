@@ -1,5 +1,6 @@
 // Pass 5's input for the multi-pass variant: visibility from the last blur.
 void main()
 {
-  gl_FragData[0] = vec4(vtkContactVisibility(vtkContactFetch(vtkScreenPixel()).r));
+  vec4 c = vtkContactFetch(vtkScreenPixel());
+  gl_FragData[0] = vtkContactOutput(c, c.r);
 }

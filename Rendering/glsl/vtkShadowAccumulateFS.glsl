@@ -41,5 +41,8 @@ void main()
     lit = texture(sampleMap, p.xyz);
   }
 #endif
-  gl_FragData[0] = vec4(lit * sampleWeight);
+  // Summed over samples whose weights add up to 1: the visibility, valid,
+  // and the surface's camera distance (vtkShadowScreenBuffers::BeginVisibility).
+  float cameraDistance = distance(position, vtkScreenCameraPosition);
+  gl_FragData[0] = vec4(lit, 1.0, cameraDistance, 0.0) * sampleWeight;
 }

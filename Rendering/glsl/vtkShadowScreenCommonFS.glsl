@@ -6,6 +6,7 @@
 in vec2 texCoord;
 uniform sampler2D vtkScreenDepth;
 uniform mat4 vtkScreenClipToWorld;
+uniform vec3 vtkScreenCameraPosition;
 
 // This pixel. From texCoord rather than gl_FragCoord so that every pass uses
 // the quad's texture coordinates (VTK's quad helper binds them).

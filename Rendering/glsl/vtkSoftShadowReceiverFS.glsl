@@ -72,20 +72,37 @@ uniform float vtkShadowDistanceBias; // multiplicative, on squared distances
 
 #ifdef VTK_SHADOW_SCREEN_SPACE
 uniform sampler2D vtkShadowScreen[VTK_SHADOW_LIGHTS];
-uniform sampler2D vtkShadowCameraDepth;
 uniform vec2 vtkShadowViewportOrigin;
+uniform vec2 vtkShadowScreenScale; // viewport pixels to screen-space texels
+uniform vec3 vtkShadowCameraPosition;
 
-// Screen-space visibility belongs to the nearest opaque surface, the one the
-// camera depth pre-pass saw; other fragments (translucent ones) take the hard
-// shadow of the light's own map instead.
-bool vtkShadowOnScreenSurface()
+// A screen-space visibility texture (vtkShadowScreenBuffers::BeginVisibility:
+// r visibility, g 1 where valid, b the surface's camera distance), possibly
+// smaller than the viewport: bilinear over the four nearest texels that lie
+// on this fragment's surface (at `positionWC`), each giving its visibility where valid and the
+// fragment's own full-resolution `hard` one where not. Fragments no texel
+// belongs to (translucent ones, silhouettes the buffer missed) keep `hard`.
+float vtkShadowScreenVisibility(sampler2D screen, vec4 positionWC, float hard)
 {
-  ivec2 pixel = ivec2(gl_FragCoord.xy - vtkShadowViewportOrigin);
-  return abs(texelFetch(vtkShadowCameraDepth, pixel, 0).r - gl_FragCoord.z) <= 1.0e-5;
-}
-
-float vtkShadowScreenValue(sampler2D screen)
-{
-  return texelFetch(screen, ivec2(gl_FragCoord.xy - vtkShadowViewportOrigin), 0).r;
+  vec2 p = (gl_FragCoord.xy - vtkShadowViewportOrigin) * vtkShadowScreenScale - 0.5;
+  vec2 f = fract(p);
+  ivec2 base = ivec2(floor(p));
+  ivec2 last = textureSize(screen, 0) - 1;
+  float distance = distance(positionWC.xyz, vtkShadowCameraPosition);
+  float sum = 0.0;
+  float weights = 0.0;
+  for (int k = 0; k < 4; ++k)
+  {
+    ivec2 offset = ivec2(k & 1, k >> 1);
+    vec4 t = texelFetch(screen, clamp(base + offset, ivec2(0), last), 0);
+    vec2 axis = mix(1.0 - f, f, vec2(offset));
+    float w = axis.x * axis.y + 1.0e-4;
+    if (abs(t.b - distance) <= 0.02 * distance)
+    {
+      sum += w * (t.g > 0.5 ? t.r : hard);
+      weights += w;
+    }
+  }
+  return weights > 0.0 ? sum / weights : hard;
 }
 #endif

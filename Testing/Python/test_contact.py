@@ -18,13 +18,20 @@ st.check(widths[0] < widths[1] < widths[2], "contact penumbra widens as the ball
          % np.round(widths, 3).tolist())
 
 # Where the occluder touches the receiver the edge stays hard: a post on the
-# ground, its shadow's side edge just beside its base, and farther out.
-scene = st.post_scene(light_radius=radius)
-visibility, _ = st.shadow_only(scene)
-at_base = st.edge_width_pixels(scene, visibility, -0.2)
-far_out = st.edge_width_pixels(scene, visibility, -1.4)
-st.check(at_base <= 2.0, "at contact the edge is hard: %.1f px wide" % at_base)
-st.check(far_out > at_base + 2.0, "away from contact it softens: %.1f px" % far_out)
+# ground, its shadow's side edge just beside its base, and farther out; with
+# screen-space buffers at full and (the default) half resolution.
+for divisor in (1, 2):
+    scene = st.post_scene(light_radius=radius)
+    scene["shadows"]["contact"] = {"resolution_divisor": divisor}
+    visibility, _ = st.shadow_only(scene)
+    at_base = st.edge_width_pixels(scene, visibility, -0.2)
+    far_out = st.edge_width_pixels(scene, visibility, -1.4)
+    print("resolution divisor %d: edge %.1f px at the base, %.1f px far out"
+          % (divisor, at_base, far_out))
+    st.check(at_base <= 2.0, "divisor %d: at contact the edge is hard: %.1f px wide"
+             % (divisor, at_base))
+    st.check(far_out > at_base + 2.0, "divisor %d: away from contact it softens: %.1f px"
+             % (divisor, far_out))
 
 # Quality against the reference: RMSE of visibility over SPEC's pixels.
 scene = st.ball_scene(height=1.5, light_radius=radius, size=(240, 180),
@@ -36,7 +43,13 @@ for technique in ("hard", "contact:pcf", "contact:gaussian", "contact:multipass"
     visibility, _ = st.shadow_only(scene, technique)
     errors[technique] = st.rmse(visibility, reference, mask)
     print("RMSE %-18s %.4f" % (technique, errors[technique]))
-for technique in ("contact:pcf", "contact:gaussian", "contact:multipass"):
+full = dict(scene, shadows=dict(scene["shadows"], contact={"resolution_divisor": 1}))
+visibility, _ = st.shadow_only(full, "contact:multipass")
+errors["contact:multipass, full resolution"] = st.rmse(visibility, reference, mask)
+print("RMSE %-18s %.4f" % ("contact:multipass, full resolution",
+                           errors["contact:multipass, full resolution"]))
+for technique in ("contact:pcf", "contact:gaussian", "contact:multipass",
+                  "contact:multipass, full resolution"):
     st.check(errors[technique] < errors["hard"],
              "%s beats hard against the reference (%.4f < %.4f)"
              % (technique, errors[technique], errors["hard"]))
