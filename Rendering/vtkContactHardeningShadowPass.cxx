@@ -60,10 +60,12 @@ public:
     Resolve;
   // Contact maps: [0] pass 2's output, [1] and [2] the ping-pong pair.
   std::array<vtkSmartPointer<vtkTextureObject>, 3> Maps;
-  // Depth used as a pixel mask: 0 where blurs work (see the prepare pass).
+  // Depth used as a pixel mask: which blur passes draw a pixel (see the
+  // prepare pass).
   vtkSmartPointer<vtkTextureObject> Mask;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
-  unsigned int RawDepthSampler = 0; // reads a depth map without comparison
+  unsigned int RawDepthSampler = 0;   // reads a depth map without comparison
+  unsigned int Queries[2] = { 0, 0 }; // did the last blur pass draw any pixel?
   bool Unsupported = false;
   // Section 3.1: up to 64 Poisson-disk points in [-1,1]^2, the first at the
   // origin.
@@ -96,7 +98,8 @@ public:
   void Draw(vtkShadowScreenBuffers* screen, std::unique_ptr<vtkOpenGLQuadHelper>& quad,
     vtkTextureObject* input, const std::function<void(vtkShaderProgram*)>& uniforms,
     float depthTolerance, bool debugView,
-    vtkShadowScreenBuffers::QuadMask mask = vtkShadowScreenBuffers::QuadMask::None)
+    vtkShadowScreenBuffers::QuadMask mask = vtkShadowScreenBuffers::QuadMask::None,
+    float quadDepth = 0.5f)
   {
     if (input)
     {
@@ -114,7 +117,7 @@ public:
         program->SetUniformi("contactDebugView", debugView ? 1 : 0);
         uniforms(program);
       },
-      mask);
+      mask, quadDepth);
     if (input)
     {
       input->Deactivate();
@@ -337,6 +340,16 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
     vtkTextureObject* last = in.Maps[1];
     if (this->Variant == MultiPass)
     {
+      // Pass k draws only the pixels the prepare pass's depth lets through
+      // (D > k - 1), and only if pass k - 1 drew any: passes after the
+      // widest penumbra's cost nothing. The condition stays on the GPU. A
+      // pixel's last blur is followed by a pass that copies it into the
+      // other buffer, unless the pass limit comes first; either way the last
+      // target holds every pixel's final value.
+      if (!in.Queries[0])
+      {
+        glGenQueries(2, in.Queries);
+      }
       for (int pass = 0; pass < this->PassLimit; ++pass)
       {
         vtkTextureObject* source = in.Maps[1 + pass % 2];
@@ -344,7 +357,12 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
         const int size = this->GrowingKernel
           ? std::min(this->MinimumKernelSize + 2 * pass, this->MaximumKernelSize)
           : this->MaximumKernelSize;
-        in.Target(context, w, h, target);
+        if (pass > 0)
+        {
+          glBeginConditionalRender(in.Queries[(pass - 1) % 2], GL_QUERY_WAIT);
+        }
+        glBeginQuery(GL_ANY_SAMPLES_PASSED, in.Queries[pass % 2]);
+        in.Target(context, w, h, target, nullptr, true);
         in.Draw(
           this->Screen.get(), in.MultiPass, source,
           [&](vtkShaderProgram* program)
@@ -353,10 +371,16 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
             program->SetUniformi("tapCount", this->PoissonTaps);
             program->SetUniformf("kernelSize", static_cast<float>(size));
           },
-          tolerance, this->DebugView);
+          tolerance, this->DebugView, vtkShadowScreenBuffers::QuadMask::Test,
+          1.0f - static_cast<float>(pass) / 256.0f);
         in.Untarget();
-        last = target;
+        glEndQuery(GL_ANY_SAMPLES_PASSED);
+        if (pass > 0)
+        {
+          glEndConditionalRender();
+        }
       }
+      last = in.Maps[1 + this->PassLimit % 2];
     }
     else if (this->Variant == Gaussian)
     {
@@ -433,6 +457,11 @@ void vtkContactHardeningShadowPass::ReleaseGraphicsResources(vtkWindow* w)
   {
     glDeleteSamplers(1, &in.RawDepthSampler);
     in.RawDepthSampler = 0;
+  }
+  if (in.Queries[0])
+  {
+    glDeleteQueries(2, in.Queries);
+    in.Queries[0] = in.Queries[1] = 0;
   }
 }
 

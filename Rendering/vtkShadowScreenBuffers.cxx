@@ -88,7 +88,7 @@ std::unique_ptr<vtkOpenGLQuadHelper> vtkShadowScreenBuffers::CreateQuad(
 
 //------------------------------------------------------------------------------
 void vtkShadowScreenBuffers::DrawQuad(vtkOpenGLQuadHelper* quad,
-  const std::function<void(vtkShaderProgram*)>& setUniforms, QuadMask mask)
+  const std::function<void(vtkShaderProgram*)>& setUniforms, QuadMask mask, float quadDepth)
 {
   vtkOpenGLState* state = this->Context->GetState();
   vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
@@ -99,15 +99,18 @@ void vtkShadowScreenBuffers::DrawQuad(vtkOpenGLQuadHelper* quad,
     case QuadMask::None:
       state->vtkglDisable(GL_DEPTH_TEST);
       break;
-    case QuadMask::Write: // the shader writes gl_FragDepth: 0 selected, 1 not
+    case QuadMask::Write: // the shader writes gl_FragDepth
       state->vtkglEnable(GL_DEPTH_TEST);
       state->vtkglDepthFunc(GL_ALWAYS);
       state->vtkglDepthMask(GL_TRUE);
       break;
-    case QuadMask::Test: // the quad lies at depth 0.5: only selected pixels pass
+    case QuadMask::Test: // the quad at quadDepth: pixels stored below it pass
       state->vtkglEnable(GL_DEPTH_TEST);
       state->vtkglDepthFunc(GL_GREATER);
       state->vtkglDepthMask(GL_FALSE);
+      // The quad's vertices lie at z = 0: a degenerate depth range puts every
+      // fragment at quadDepth. (The state cache does not track depth ranges.)
+      glDepthRange(quadDepth, quadDepth);
       break;
   }
   this->Context->GetShaderCache()->ReadyShaderProgram(quad->Program);
@@ -117,6 +120,10 @@ void vtkShadowScreenBuffers::DrawQuad(vtkOpenGLQuadHelper* quad,
   quad->Program->SetUniform3f("vtkScreenCameraPosition", this->CameraPosition);
   setUniforms(quad->Program);
   quad->Render();
+  if (mask == QuadMask::Test)
+  {
+    glDepthRange(0.0, 1.0);
+  }
   this->CameraDepth->Deactivate();
 }
 

@@ -66,17 +66,18 @@ public:
   enum class QuadMask
   {
     None,  ///< no depth test
-    Write, ///< the shader sets gl_FragDepth: 0 selects a pixel, 1 does not
-    Test   ///< only pixels selected by an earlier Write pass are drawn
+    Write, ///< the shader sets gl_FragDepth (below the quad's depth selects)
+    Test   ///< only pixels whose stored depth is below the quad's are drawn
   };
 
   /**
    * Draw a CreateQuad() pass over the current target: binds the camera depth,
    * uploads the reconstruction matrix, then lets `setUniforms` add the pass's
-   * own.
+   * own. With QuadMask::Test the quad lies at `quadDepth` (window depth).
    */
   void DrawQuad(vtkOpenGLQuadHelper* quad,
-    const std::function<void(vtkShaderProgram*)>& setUniforms, QuadMask mask = QuadMask::None);
+    const std::function<void(vtkShaderProgram*)>& setUniforms, QuadMask mask = QuadMask::None,
+    float quadDepth = 0.5f);
 
   /**
    * Draw into light `slot`'s visibility texture (allocated on demand, the

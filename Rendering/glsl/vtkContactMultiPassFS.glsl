@@ -1,8 +1,9 @@
 // Pass 4, multi-pass variant: one Poisson-disk Gaussian blur of S over a
 // kernel of `kernelSize` pixels (sigma = size / 3, weights normalised), for
 // pixels whose D is still positive; D drops by one. Only pixels the prepare
-// pass selected are drawn (depth mask); those whose D ran out are copied, so
-// both ping-pong buffers always agree.
+// pass selected for this pass are drawn (depth mask): those still blurring,
+// and those whose D ran out in the pass before, copied so that both ping-pong
+// buffers agree on them from then on.
 uniform vec3 taps[64];
 uniform int tapCount;
 uniform float kernelSize;

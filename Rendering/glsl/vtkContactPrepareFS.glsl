@@ -1,7 +1,9 @@
 // Between passes 2 and 4: the umbra early-out (section 5: D = 0 where the
 // whole neighbourhood is shadowed) and the optional dilation of D (pass 3).
-// Writes the same texel to both ping-pong buffers, and depth 0 where blurs
-// will work (D > 0), 1 elsewhere, so that blur passes skip the rest.
+// Writes the same texel to both ping-pong buffers, and a depth that lets
+// multi-pass blur k (drawn at depth 1 - k / 256) through only where D > k - 1:
+// the ceil(D) passes that blur the pixel and one more that copies its final
+// value into the other buffer. Elsewhere depth 1: no blur touches it.
 uniform bool earlyOut;
 uniform int earlyOutRadius;
 uniform bool dilation;
@@ -55,5 +57,5 @@ void main()
   vec4 result = vec4(c.r, d, c.b, d > 0.0 ? 1.0 : 0.0);
   gl_FragData[0] = result;
   gl_FragData[1] = result;
-  gl_FragDepth = d > 0.0 ? 0.0 : 1.0;
+  gl_FragDepth = d > 0.0 ? 1.0 - (min(ceil(d), 254.0) + 1.0) / 256.0 : 1.0;
 }
