@@ -306,6 +306,7 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
         program->SetUniform3f("cameraPosition", camera->GetPosition());
         program->SetUniform2f("pixelFootprint", pixelFootprint);
         program->SetUniformi("countPasses", this->Variant == MultiPass ? 1 : 0);
+        program->SetUniformf("resolutionDivisor", static_cast<float>(this->ResolutionDivisor));
         program->SetUniformi("passLimit", this->PassLimit);
         program->SetUniformi("minimumKernel", this->MinimumKernelSize);
         program->SetUniformi("maximumKernel", this->MaximumKernelSize);

@@ -83,8 +83,9 @@ public:
   ///@{
   /**
    * D = (occluder distance)^DistancePower * DistanceMultiplier, the distance
-   * in world units, when UseLightSize is off. Defaults 3.0 and 200 (the
-   * paper's ball scene).
+   * in world units, when UseLightSize is off, in full-resolution pixels
+   * (kernels) or passes whatever the ResolutionDivisor. Defaults 3.0 and 200
+   * (the paper's ball scene).
    */
   vtkSetClampMacro(DistancePower, double, 0.0, 16.0);
   vtkGetMacro(DistancePower, double);

@@ -29,6 +29,7 @@ uniform vec3 cameraPosition;
 uniform vec2 pixelFootprint; // world size of a pixel: x + y * camera distance
 
 uniform bool countPasses; // multi-pass: D is a number of passes
+uniform float resolutionDivisor; // viewport pixels per pixel of this buffer
 uniform int passLimit;
 uniform int minimumKernel;
 uniform int maximumKernel;
@@ -131,7 +132,11 @@ void main()
   }
   else
   {
-    d = pow(occluderDistance, distancePower) * distanceMultiplier;
+    // Dp and Dm are tuned in full-resolution pixels: a kernel this buffer's
+    // `resolutionDivisor` times smaller covers as much, and a blur pass
+    // spreads as far as divisor^2 full-resolution ones (variances add).
+    d = pow(occluderDistance, distancePower) * distanceMultiplier /
+      (countPasses ? resolutionDivisor * resolutionDivisor : resolutionDivisor);
   }
   gl_FragData[0] = vec4(1.0, d, cameraDistance, 0.0);
 }
