@@ -19,6 +19,14 @@
  *
  * The receivers are shaded with 1 - S (pass 5).
  *
+ * For speed, passes 2 to 4 run on buffers ResolutionDivisor (default 2) times
+ * smaller than the viewport per axis: receivers upsample 1 - S along their
+ * own surface, and wherever no blur reached (lit, deep umbra, and next to
+ * contact, where D < 1) keep their own full-resolution hard shadow, so
+ * contact edges stay as sharp as the shadow map. Multi-pass blurs draw only
+ * the pixels still blurring (the depth buffer holds each pixel's pass count)
+ * and stop, on the GPU, once no pixel is left.
+ *
  * D comes either from the paper's D = (occluder distance)^Dp * Dm
  * (UseLightSize off: DistancePower and DistanceMultiplier, tuned per scene), or,
  * beyond the paper (its section 6), from the light's radius
