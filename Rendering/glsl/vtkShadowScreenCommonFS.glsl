@@ -46,11 +46,13 @@ vec3 vtkScreenNormalWC(float depth, vec3 positionWC)
   float right = vtkScreenDepthAt(pixel + ivec2(1, 0));
   float down = vtkScreenDepthAt(pixel - ivec2(0, 1));
   float up = vtkScreenDepthAt(pixel + ivec2(0, 1));
-  vec3 dx = abs(right - depth) < abs(left - depth)
-    ? vtkScreenPositionWC(texCoord + vec2(texel.x, 0.0), right) - positionWC
-    : positionWC - vtkScreenPositionWC(texCoord - vec2(texel.x, 0.0), left);
-  vec3 dy = abs(up - depth) < abs(down - depth)
-    ? vtkScreenPositionWC(texCoord + vec2(0.0, texel.y), up) - positionWC
-    : positionWC - vtkScreenPositionWC(texCoord - vec2(0.0, texel.y), down);
+  // Pick the side first, then rebuild one position an axis: shaders on a
+  // software rasterizer evaluate both arms of a selection.
+  float sx = abs(right - depth) < abs(left - depth) ? 1.0 : -1.0;
+  float sy = abs(up - depth) < abs(down - depth) ? 1.0 : -1.0;
+  vec3 dx = sx *
+    (vtkScreenPositionWC(texCoord + vec2(sx * texel.x, 0.0), sx > 0.0 ? right : left) - positionWC);
+  vec3 dy = sy *
+    (vtkScreenPositionWC(texCoord + vec2(0.0, sy * texel.y), sy > 0.0 ? up : down) - positionWC);
   return normalize(cross(dx, dy));
 }
