@@ -1,7 +1,9 @@
 """Screen-space techniques in a renderer that does not start at the window's
 corner: the same scene drawn in a whole window and in the right half of one
 twice as wide (an odd size, so reduced buffers round up) must give the same
-visibility, for `contact` at full and half resolution and for `reference`."""
+visibility, for `contact` at full and half resolution and for `reference`.
+And tiny or empty viewports, for every pass: drawn, or refused with an
+error, never a crash."""
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
@@ -10,7 +12,8 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkPolyDataMapper,
                                          vtkWindowToImageFilter)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (OpenGL factory)
 
-from vtksoftshadows import (vtkContactHardeningShadowPass, vtkReferenceShadowPass,
+from vtksoftshadows import (vtkContactHardeningShadowPass, vtkHardShadowPass,
+                            vtkOmnidirectionalShadowPass, vtkReferenceShadowPass,
                             vtkSoftShadowPass)
 
 import shadowtest as st
@@ -108,3 +111,21 @@ for label, make_pass in (("contact, divisor 1", contact(1)), ("contact, divisor 
     print("%s: %d of %d pixels differ, %d in shadow" % (label, differ, expected.size, shadowed))
     st.check(shadowed > 1000, "%s: the ball casts a shadow (%d pixels)" % (label, shadowed))
     st.check(differ == 0, "%s: the right-hand renderer sees the same visibility" % label)
+
+
+# Tiny and empty viewports: one pixel, three, a sliver that rounds to nothing.
+for make_pass in (vtkHardShadowPass, contact(2), vtkOmnidirectionalShadowPass, reference):
+    for size, viewport, empty in (((1, 1), (0, 0, 1, 1), False), ((3, 3), (0, 0, 1, 1), False),
+                                  ((64, 64), (0.5, 0, 0.5, 1), True)):
+        window = vtkRenderWindow()
+        window.SetOffScreenRendering(1)
+        window.SetSize(*size)
+        r = renderer(make_pass, viewport)
+        errors = []
+        r.GetPass().AddObserver("ErrorEvent", lambda obj, event: errors.append(event))
+        window.AddRenderer(r)
+        window.Render()
+        name = r.GetPass().GetClassName()
+        st.check(bool(errors) == empty, "%s in a %dx%d viewport: %s" % (
+            name, size[0] if not empty else 0, size[1],
+            "refused with an error" if empty else "drawn without error"))
