@@ -1,6 +1,7 @@
 // Pass 4, single Gaussian variant: a separable Gaussian blur of S over D
 // pixels (clamped to the maximum; sigma = size / 3), run once along x, then
-// along y writing pass 5's visibility.
+// along y writing pass 5's visibility. The texel just beyond D / 2 counts in
+// part, so the result changes smoothly with D.
 uniform int maximumKernel;
 uniform ivec2 direction;
 uniform bool lastPass;
@@ -13,7 +14,8 @@ void main()
   if (c.g > 0.0)
   {
     float size = min(c.g, float(maximumKernel));
-    int radius = int(size * 0.5);
+    float reach = size * 0.5;
+    int radius = int(reach) + 1;
     float sigma = max(size / 3.0, 0.5);
     float sum = 0.0;
     float weights = 0.0;
@@ -22,7 +24,8 @@ void main()
       vec4 t = vtkContactFetch(pixel + i * direction);
       if (vtkContactSameSurface(c, t))
       {
-        float w = exp(-0.5 * float(i * i) / (sigma * sigma));
+        float w = exp(-0.5 * float(i * i) / (sigma * sigma)) *
+          clamp(reach + 1.0 - abs(float(i)), 0.0, 1.0);
         sum += w * t.r;
         weights += w;
       }

@@ -1,5 +1,7 @@
 // Pass 4, PCF variant: the mean of S over a square kernel of D pixels
-// (clamped to the maximum), then pass 5's visibility.
+// (clamped to the maximum), then pass 5's visibility. Texels count by how
+// much of them the kernel covers, so the result changes smoothly with D
+// (a kernel of whole texels makes steps where D crosses an odd number).
 uniform int maximumKernel;
 
 void main()
@@ -9,7 +11,8 @@ void main()
   float s = c.r;
   if (c.g > 0.0)
   {
-    int radius = int(min(c.g, float(maximumKernel)) * 0.5);
+    float reach = min(c.g, float(maximumKernel)) * 0.5;
+    int radius = int(ceil(reach - 0.5));
     float sum = 0.0;
     float count = 0.0;
     for (int y = -radius; y <= radius; ++y)
@@ -19,8 +22,10 @@ void main()
         vec4 t = vtkContactFetch(pixel + ivec2(x, y));
         if (vtkContactSameSurface(c, t))
         {
-          sum += t.r;
-          count += 1.0;
+          vec2 cover = clamp(vec2(reach + 0.5) - abs(vec2(x, y)), 0.0, 1.0);
+          float w = cover.x * cover.y;
+          sum += w * t.r;
+          count += w;
         }
       }
     }
