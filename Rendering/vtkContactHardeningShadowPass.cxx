@@ -66,6 +66,7 @@ public:
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   unsigned int RawDepthSampler = 0;   // reads a depth map without comparison
   unsigned int Queries[2] = { 0, 0 }; // did the last blur pass draw any pixel?
+  float DistanceUnit = 1.0f;          // camera distances in the maps, in world units
   bool Unsupported = false;
   // Section 3.1: up to 64 Poisson-disk points in [-1,1]^2, the first at the
   // origin.
@@ -114,6 +115,7 @@ public:
           program->SetUniformi("contactMap", input->GetTextureUnit());
         }
         program->SetUniformf("contactDepthTolerance", depthTolerance);
+        program->SetUniformf("contactDistanceUnit", this->DistanceUnit);
         program->SetUniformi("contactDebugView", debugView ? 1 : 0);
         uniforms(program);
       },
@@ -238,6 +240,7 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
 
   // The camera's pixel footprint, to turn world penumbra widths into pixels.
   vtkCamera* camera = renderer->GetActiveCamera();
+  in.DistanceUnit = static_cast<float>(std::max(camera->GetClippingRange()[1], 1e-30));
   float pixelFootprint[2] = { 0.0f, 0.0f };
   if (camera->GetParallelProjection())
   {
@@ -362,7 +365,7 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
         {
           glBeginConditionalRender(in.Queries[(pass - 1) % 2], GL_QUERY_WAIT);
         }
-        glBeginQuery(GL_ANY_SAMPLES_PASSED, in.Queries[pass % 2]);
+        glBeginQuery(GL_SAMPLES_PASSED, in.Queries[pass % 2]);
         in.Target(context, w, h, target, nullptr, true);
         in.Draw(
           this->Screen.get(), in.MultiPass, source,
@@ -375,7 +378,7 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
           tolerance, this->DebugView, vtkShadowScreenBuffers::QuadMask::Test,
           1.0f - static_cast<float>(pass) / 256.0f);
         in.Untarget();
-        glEndQuery(GL_ANY_SAMPLES_PASSED);
+        glEndQuery(GL_SAMPLES_PASSED);
         if (pass > 0)
         {
           glEndConditionalRender();

@@ -94,6 +94,7 @@ void vtkShadowScreenBuffers::DrawQuad(vtkOpenGLQuadHelper* quad,
   vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglDepthFunc depthFunc(state);
   vtkOpenGLState::ScopedglDepthMask depthMask(state);
+  double depthRange[2] = { 0.0, 1.0 };
   switch (mask)
   {
     case QuadMask::None:
@@ -110,6 +111,7 @@ void vtkShadowScreenBuffers::DrawQuad(vtkOpenGLQuadHelper* quad,
       state->vtkglDepthMask(GL_FALSE);
       // The quad's vertices lie at z = 0: a degenerate depth range puts every
       // fragment at quadDepth. (The state cache does not track depth ranges.)
+      glGetDoublev(GL_DEPTH_RANGE, depthRange);
       glDepthRange(quadDepth, quadDepth);
       break;
   }
@@ -122,7 +124,7 @@ void vtkShadowScreenBuffers::DrawQuad(vtkOpenGLQuadHelper* quad,
   quad->Render();
   if (mask == QuadMask::Test)
   {
-    glDepthRange(0.0, 1.0);
+    glDepthRange(depthRange[0], depthRange[1]);
   }
   this->CameraDepth->Deactivate();
 }

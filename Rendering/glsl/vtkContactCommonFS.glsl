@@ -2,8 +2,11 @@
 // A contact map texel holds r = S (1 shadowed, 0 lit), g = D (the kernel
 // control; <= 0: not blurred), b = the surface's distance to the camera (0 on
 // background) and a = 1 once a blur will touch or has touched the pixel.
+// The camera distance is in units of contactDistanceUnit (the far clipping
+// distance), so that half floats hold it in scenes of any scale.
 uniform sampler2D contactMap;
 uniform float contactDepthTolerance;
+uniform float contactDistanceUnit;
 uniform bool contactDebugView;
 
 vec4 vtkContactFetch(ivec2 pixel)
@@ -37,5 +40,5 @@ float vtkContactVisibility(float s)
 vec4 vtkContactOutput(vec4 c, float s)
 {
   bool valid = contactDebugView ? c.b > 0.0 : c.a > 0.5;
-  return vec4(vtkContactVisibility(s), valid ? 1.0 : 0.0, c.b, 0.0);
+  return vec4(vtkContactVisibility(s), valid ? 1.0 : 0.0, c.b * contactDistanceUnit, 0.0);
 }

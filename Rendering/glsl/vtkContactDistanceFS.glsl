@@ -84,7 +84,7 @@ void main()
   vec3 normal = max(length(dx), length(dy)) < 16.0 * footprint
     ? normalize(cross(dx, dy))
     : vtkScreenNormalWC(depth, position);
-  vec4 lit = vec4(0.0, 0.0, cameraDistance, 0.0);
+  vec4 lit = vec4(0.0, 0.0, cameraDistance / contactDistanceUnit, 0.0);
 
   // The receiver's and the nearest blocker's distances from the light.
   float receiverDistance;
@@ -138,5 +138,5 @@ void main()
     d = pow(occluderDistance, distancePower) * distanceMultiplier /
       (countPasses ? resolutionDivisor * resolutionDivisor : resolutionDivisor);
   }
-  gl_FragData[0] = vec4(1.0, d, cameraDistance, 0.0);
+  gl_FragData[0] = vec4(1.0, d, cameraDistance / contactDistanceUnit, 0.0);
 }

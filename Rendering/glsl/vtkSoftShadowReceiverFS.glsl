@@ -79,16 +79,21 @@ uniform vec3 vtkShadowCameraPosition;
 // A screen-space visibility texture (vtkShadowScreenBuffers::BeginVisibility:
 // r visibility, g 1 where valid, b the surface's camera distance), possibly
 // smaller than the viewport: bilinear over the four nearest texels that lie
-// on this fragment's surface (at `positionWC`), each giving its visibility where valid and the
-// fragment's own full-resolution `hard` one where not. Fragments no texel
-// belongs to (translucent ones, silhouettes the buffer missed) keep `hard`.
+// on this fragment's surface (at `positionWC`; camera distances within 2%),
+// each giving its visibility where valid and the fragment's own
+// full-resolution `hard` one where not. Fragments no texel belongs to
+// (silhouettes the buffer missed, translucent surfaces not within 2% of an
+// opaque one, surfaces seen within a few degrees of edge-on) keep `hard`.
+// A tolerance that grows with the distance's slope would keep the
+// screen-space result on grazing surfaces, but there the isotropic
+// screen-space kernels are worse than the hard shadow (README, Quality).
 float vtkShadowScreenVisibility(sampler2D screen, vec4 positionWC, float hard)
 {
   vec2 p = (gl_FragCoord.xy - vtkShadowViewportOrigin) * vtkShadowScreenScale - 0.5;
   vec2 f = fract(p);
   ivec2 base = ivec2(floor(p));
   ivec2 last = textureSize(screen, 0) - 1;
-  float distance = distance(positionWC.xyz, vtkShadowCameraPosition);
+  float fragmentDistance = distance(positionWC.xyz, vtkShadowCameraPosition);
   float sum = 0.0;
   float weights = 0.0;
   for (int k = 0; k < 4; ++k)
@@ -97,7 +102,7 @@ float vtkShadowScreenVisibility(sampler2D screen, vec4 positionWC, float hard)
     vec4 t = texelFetch(screen, clamp(base + offset, ivec2(0), last), 0);
     vec2 axis = mix(1.0 - f, f, vec2(offset));
     float w = axis.x * axis.y + 1.0e-4;
-    if (abs(t.b - distance) <= 0.02 * distance)
+    if (abs(t.b - fragmentDistance) <= 0.02 * fragmentDistance)
     {
       sum += w * (t.g > 0.5 ? t.r : hard);
       weights += w;

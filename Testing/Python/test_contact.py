@@ -1,6 +1,8 @@
 """The `contact` technique (Cherry & Kooima): contact-hardening penumbrae that
 widen with the occluder's height, and, with kernels sized from the light's
 radius, closer to the `reference` ground truth than hard shadows."""
+import copy
+
 import numpy as np
 
 import shadowtest as st
@@ -53,3 +55,32 @@ for technique in ("contact:pcf", "contact:gaussian", "contact:multipass",
     st.check(errors[technique] < errors["hard"],
              "%s beats hard against the reference (%.4f < %.4f)"
              % (technique, errors[technique], errors["hard"]))
+
+
+# Scale: the same scene 100,000 times larger (a kilometre-scale mesh in
+# metres, say) must look the same; camera distances stored as half floats
+# overflowed there, and every pixel fell back to the hard shadow.
+def scaled(scene, k):
+    s = copy.deepcopy(scene)
+    for key in ("position", "focal_point"):
+        s["camera"][key] = [k * x for x in s["camera"][key]]
+        for light in s["lights"]:
+            light[key] = [k * x for x in light[key]]
+    for light in s["lights"]:
+        light["radius"] *= k
+    for actor in s["actors"]:
+        params = actor["params"]
+        for key in ("size", "radius"):
+            if key in params:
+                params[key] = [k * x for x in params[key]] if key == "size" else k * params[key]
+        if "position" in actor:
+            actor["position"] = [k * x for x in actor["position"]]
+    return s
+
+
+scene = st.ball_scene(height=1.5, light_radius=radius, technique="contact")
+unit, mask = st.shadow_only(scene)
+large, _ = st.shadow_only(scaled(scene, 1.0e5))
+difference = st.rmse(large, unit, mask)
+print("scene scaled by 1e5: RMSE to the unit scene %.4f" % difference)
+st.check(difference < 0.005, "a scene 1e5 times larger looks the same (RMSE %.4f)" % difference)
