@@ -127,7 +127,13 @@ void main()
   if (useLightSize)
   {
     float world = occluderDistance * lightSize / (perspective ? blockerDistance : 1.0);
-    float pixels = world / (pixelFootprint.x + pixelFootprint.y * cameraDistance);
+    // The penumbra lies on the receiver, which the view foreshortens by
+    // |n.v| across its slope: an isotropic kernel sized for the unforeshortened
+    // width blurs that way 1 / |n.v| times too far (seen edge-on, far worse
+    // than a hard edge). Sizing for the foreshortened width errs the other
+    // way along the slope's level lines, where a narrower blur costs less.
+    float facing = abs(dot(normal, normalize(cameraPosition - position)));
+    float pixels = world * facing / (pixelFootprint.x + pixelFootprint.y * cameraDistance);
     d = countPasses ? vtkContactPassesFor(pixels) : pixels;
   }
   else

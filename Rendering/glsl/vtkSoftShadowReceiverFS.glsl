@@ -86,7 +86,7 @@ uniform vec3 vtkShadowCameraPosition;
 // opaque one, surfaces seen within a few degrees of edge-on) keep `hard`.
 // A tolerance that grows with the distance's slope would keep the
 // screen-space result on grazing surfaces, but there the isotropic
-// screen-space kernels are worse than the hard shadow (README, Quality).
+// screen-space kernels do no better than the hard shadow (README, Quality).
 float vtkShadowScreenVisibility(sampler2D screen, vec4 positionWC, float hard)
 {
   vec2 p = (gl_FragCoord.xy - vtkShadowViewportOrigin) * vtkShadowScreenScale - 0.5;
