@@ -306,7 +306,6 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
         program->SetUniformf("lightSize", static_cast<float>(size));
         program->SetUniformf("distancePower", static_cast<float>(this->DistancePower));
         program->SetUniformf("distanceMultiplier", static_cast<float>(this->DistanceMultiplier));
-        program->SetUniform3f("cameraPosition", camera->GetPosition());
         program->SetUniform2f("pixelFootprint", pixelFootprint);
         program->SetUniformi("countPasses", this->Variant == MultiPass ? 1 : 0);
         program->SetUniformf("resolutionDivisor", static_cast<float>(this->ResolutionDivisor));

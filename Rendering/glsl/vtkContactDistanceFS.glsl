@@ -25,7 +25,6 @@ uniform bool useLightSize;
 uniform float lightSize; // spot: diameter; directional: 2 tan(angular radius)
 uniform float distancePower;
 uniform float distanceMultiplier;
-uniform vec3 cameraPosition;
 uniform vec2 pixelFootprint; // world size of a pixel: x + y * camera distance
 
 uniform bool countPasses; // multi-pass: D is a number of passes
@@ -77,7 +76,7 @@ void main()
   // The face normal from derivatives, cheaper than vtkScreenNormalWC's four
   // neighbours; but where a derivative spans a depth discontinuity (steeper
   // than about 86 degrees), the neighbours' way, which skips the far side.
-  float cameraDistance = distance(position, cameraPosition);
+  float cameraDistance = distance(position, vtkScreenCameraPosition);
   vec3 dx = dFdx(position);
   vec3 dy = dFdy(position);
   float footprint = pixelFootprint.x + pixelFootprint.y * cameraDistance;
@@ -132,7 +131,7 @@ void main()
     // width blurs that way 1 / |n.v| times too far (seen edge-on, far worse
     // than a hard edge). Sizing for the foreshortened width errs the other
     // way along the slope's level lines, where a narrower blur costs less.
-    float facing = abs(dot(normal, normalize(cameraPosition - position)));
+    float facing = abs(dot(normal, normalize(vtkScreenCameraPosition - position)));
     float pixels = world * facing / (pixelFootprint.x + pixelFootprint.y * cameraDistance);
     d = countPasses ? vtkContactPassesFor(pixels) : pixels;
   }
