@@ -196,7 +196,6 @@ void vtkShadowScreenBuffers::SetUniforms(vtkShaderProgram* program, int numberOf
   float scale[2] = { static_cast<float>(this->Width) / std::max(this->ViewportSize[0], 1),
     static_cast<float>(this->Height) / std::max(this->ViewportSize[1], 1) };
   program->SetUniform2f("vtkShadowScreenScale", scale);
-  program->SetUniform3f("vtkShadowCameraPosition", this->CameraPosition);
   for (int i = 0; i < numberOfLights && i < static_cast<int>(this->Visibility.size()); ++i)
   {
     const std::string name = "vtkShadowScreen[" + std::to_string(i) + "]";

@@ -74,7 +74,6 @@ uniform float vtkShadowDistanceBias; // multiplicative, on squared distances
 uniform sampler2D vtkShadowScreen[VTK_SHADOW_LIGHTS];
 uniform vec2 vtkShadowViewportOrigin;
 uniform vec2 vtkShadowScreenScale; // viewport pixels to screen-space texels
-uniform vec3 vtkShadowCameraPosition;
 
 // A screen-space visibility texture (vtkShadowScreenBuffers::BeginVisibility:
 // r visibility, g 1 where valid, b the surface's camera distance), possibly
@@ -93,7 +92,8 @@ float vtkShadowScreenVisibility(sampler2D screen, vec4 positionWC, float hard)
   vec2 f = fract(p);
   ivec2 base = ivec2(floor(p));
   ivec2 last = textureSize(screen, 0) - 1;
-  float fragmentDistance = distance(positionWC.xyz, vtkShadowCameraPosition);
+  // The camera sits at the view-space origin.
+  float fragmentDistance = distance(positionWC.xyz, vtkShadowViewToWorld[3].xyz);
   float sum = 0.0;
   float weights = 0.0;
   for (int k = 0; k < 4; ++k)
