@@ -25,6 +25,8 @@ set(softshadows_rendering_shaders
   vtkContactPCFFS
   vtkContactPrepareFS
   vtkContactResolveFS
+  vtkContactTileSpreadFS
+  vtkContactTilesFS
   vtkOmniPoissonFS
   vtkShadowAccumulateFS
   vtkShadowCubeLayersGS

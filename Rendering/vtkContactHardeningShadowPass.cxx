@@ -22,20 +22,27 @@
 #include "vtkContactPCFFS.h"
 #include "vtkContactPrepareFS.h"
 #include "vtkContactResolveFS.h"
+#include "vtkContactTileSpreadFS.h"
+#include "vtkContactTilesFS.h"
 #include "vtkShadowCubeLookupFS.h"
 #include "vtkShadowNormalOffsetFS.h"
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/type_ptr.hpp>
 #include <glm/trigonometric.hpp>
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 #include <array>
 #include <cmath>
+#include <sstream>
 #include <string>
 
 namespace
 {
 constexpr int MaximumTaps = 64;
+// Pixels (of the distance map) on a side of a classification tile.
+constexpr int TileSize = 8;
 
 vtkSmartPointer<vtkTextureObject> FloatTexture(vtkOpenGLRenderWindow* context, int w, int h)
 {
@@ -45,7 +52,7 @@ vtkSmartPointer<vtkTextureObject> FloatTexture(vtkOpenGLRenderWindow* context, i
   texture->SetMagnificationFilter(vtkTextureObject::Nearest);
   texture->SetWrapS(vtkTextureObject::ClampToEdge);
   texture->SetWrapT(vtkTextureObject::ClampToEdge);
-  texture->SetInternalFormat(GL_RGBA16F);
+  texture->SetInternalFormat(GL_RGBA32F);
   texture->SetFormat(GL_RGBA);
   texture->SetDataType(GL_FLOAT);
   texture->Allocate2D(w, h, 4, VTK_FLOAT);
@@ -56,17 +63,27 @@ vtkSmartPointer<vtkTextureObject> FloatTexture(vtkOpenGLRenderWindow* context, i
 class vtkContactHardeningShadowPass::vtkInternals
 {
 public:
-  std::unique_ptr<vtkOpenGLQuadHelper> Distance, DistanceCube, Prepare, MultiPass, PCF, Gaussian,
+  std::unique_ptr<vtkOpenGLQuadHelper> Tiles, TileSpread, Prepare, MultiPass, PCF, Gaussian,
     Resolve;
-  // Contact maps: [0] pass 2's output, [1] and [2] the ping-pong pair.
-  std::array<vtkSmartPointer<vtkTextureObject>, 3> Maps;
+  // Pass 2's output, one per light of a camera pass.
+  std::vector<vtkSmartPointer<vtkTextureObject>> DistanceMaps;
+  // The ping-pong pair of the filtering passes.
+  std::array<vtkSmartPointer<vtkTextureObject>, 2> Maps;
+  // Tile classification of a distance map for the prepare pass: per tile,
+  // then spread over its neighbourhoods.
+  std::array<vtkSmartPointer<vtkTextureObject>, 2> TileMaps;
   // Depth used as a pixel mask: which blur passes draw a pixel (see the
   // prepare pass).
   vtkSmartPointer<vtkTextureObject> Mask;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   unsigned int RawDepthSampler = 0;   // reads a depth map without comparison
+  unsigned int BilinearSampler = 0;   // reads a contact map filtered
   unsigned int Queries[2] = { 0, 0 }; // did the last blur pass draw any pixel?
-  float DistanceUnit = 1.0f;          // camera distances in the maps, in world units
+  glm::vec2 PixelFootprint{ 0.0f };   // world size of a buffer pixel: x + y * distance
+  int LightsPerCameraPass = 1;        // distance maps one camera pass writes
+  size_t CameraPassFirst = 0;         // the first light the camera pass draws
+  std::vector<int> CameraPassUnits;   // texture units of its lights' maps
+  std::vector<float> PassMidpoints;   // see passMidpoints in vtkContactDistanceFS.glsl
   bool Unsupported = false;
   // Section 3.1: up to 64 Poisson-disk points in [-1,1]^2, the first at the
   // origin.
@@ -115,7 +132,6 @@ public:
           program->SetUniformi("contactMap", input->GetTextureUnit());
         }
         program->SetUniformf("contactDepthTolerance", depthTolerance);
-        program->SetUniformf("contactDistanceUnit", this->DistanceUnit);
         program->SetUniformi("contactDebugView", debugView ? 1 : 0);
         uniforms(program);
       },
@@ -160,6 +176,13 @@ vtkContactHardeningShadowPass::vtkContactHardeningShadowPass()
 vtkContactHardeningShadowPass::~vtkContactHardeningShadowPass() = default;
 
 //------------------------------------------------------------------------------
+int vtkContactHardeningShadowPass::KernelSize(int pass) const
+{
+  return this->GrowingKernel ? std::min(this->MinimumKernelSize + 2 * pass, this->MaximumKernelSize)
+                             : this->MaximumKernelSize;
+}
+
+//------------------------------------------------------------------------------
 bool vtkContactHardeningShadowPass::RenderShadowMaps(const vtkRenderState* s)
 {
   // Pass 1. Unfiltered: pass 2 reads raw depths, the translucent fallback
@@ -192,10 +215,17 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
     glSamplerParameteri(in.RawDepthSampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glSamplerParameteri(in.RawDepthSampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glSamplerParameteri(in.RawDepthSampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glGenSamplers(1, &in.BilinearSampler);
+    glSamplerParameteri(in.BilinearSampler, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glSamplerParameteri(in.BilinearSampler, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glSamplerParameteri(in.BilinearSampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(in.BilinearSampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    GLint drawBuffers = 1;
+    glGetIntegerv(GL_MAX_DRAW_BUFFERS, &drawBuffers);
+    in.LightsPerCameraPass = std::max(1, std::min(static_cast<int>(drawBuffers), 8));
   }
 
-  const std::string common =
-    std::string(vtkShadowNormalOffsetFS) + "\n" + vtkShadowCubeLookupFS + "\n" + vtkContactCommonFS;
+  const std::string common = vtkContactCommonFS;
   auto build = [&](std::unique_ptr<vtkOpenGLQuadHelper>& quad, const char* source)
   {
     if (!quad)
@@ -204,8 +234,7 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
     }
     return quad->Program != nullptr;
   };
-  const std::string distanceCube = std::string("#define CONTACT_CUBE\n") + vtkContactDistanceFS;
-  if (!build(in.Distance, vtkContactDistanceFS) || !build(in.DistanceCube, distanceCube.c_str()) ||
+  if (!build(in.Tiles, vtkContactTilesFS) || !build(in.TileSpread, vtkContactTileSpreadFS) ||
     !build(in.Prepare, vtkContactPrepareFS) || !build(in.MultiPass, vtkContactMultiPassFS) ||
     !build(in.PCF, vtkContactPCFFS) || !build(in.Gaussian, vtkContactGaussianFS) ||
     !build(in.Resolve, vtkContactResolveFS))
@@ -217,13 +246,27 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
 
   const int w = this->Screen->GetWidth();
   const int h = this->Screen->GetHeight();
-  for (auto& map : in.Maps)
+  auto& lights = this->Maps->GetLights();
+  in.DistanceMaps.resize(std::min(lights.size(), static_cast<size_t>(in.LightsPerCameraPass)));
+  auto allocate = [context](vtkSmartPointer<vtkTextureObject>& map, int width, int height)
   {
     if (!map)
     {
-      map = FloatTexture(context, w, h);
+      map = FloatTexture(context, width, height);
     }
-    map->Resize(w, h);
+    map->Resize(width, height);
+  };
+  for (auto& map : in.DistanceMaps)
+  {
+    allocate(map, w, h);
+  }
+  for (auto& map : in.Maps)
+  {
+    allocate(map, w, h);
+  }
+  for (auto& map : in.TileMaps)
+  {
+    allocate(map, (w + TileSize - 1) / TileSize, (h + TileSize - 1) / TileSize);
   }
   if (!in.Mask)
   {
@@ -240,17 +283,176 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
 
   // The camera's pixel footprint, to turn world penumbra widths into pixels.
   vtkCamera* camera = renderer->GetActiveCamera();
-  in.DistanceUnit = static_cast<float>(std::max(camera->GetClippingRange()[1], 1e-30));
-  float pixelFootprint[2] = { 0.0f, 0.0f };
+  in.PixelFootprint = glm::vec2(0.0f);
   if (camera->GetParallelProjection())
   {
-    pixelFootprint[0] = static_cast<float>(2.0 * camera->GetParallelScale() / h);
+    in.PixelFootprint.x = static_cast<float>(2.0 * camera->GetParallelScale() / h);
   }
   else
   {
-    pixelFootprint[1] =
+    in.PixelFootprint.y =
       static_cast<float>(2.0 * std::tan(glm::radians(camera->GetViewAngle()) / 2.0) / h);
   }
+
+  // Blur variances add: where the variance of k + 1 passes becomes closer to
+  // a penumbra's than that of k passes.
+  float kernelVariance = 0.0f;
+  in.Taps(this->PoissonTaps, kernelVariance);
+  in.PassMidpoints.clear();
+  float variance = 0.0f;
+  for (int pass = 0; pass < this->PassLimit; ++pass)
+  {
+    const float size = static_cast<float>(this->KernelSize(pass));
+    const float next = variance + kernelVariance * size * size;
+    in.PassMidpoints.push_back(0.5f * (variance + next));
+    variance = next;
+  }
+
+  // Pass 2 for up to LightsPerCameraPass lights at a time, drawn with the
+  // camera depth; then each light's filtering.
+  for (size_t first = 0; first < lights.size(); first += in.DistanceMaps.size())
+  {
+    const size_t count = std::min(in.DistanceMaps.size(), lights.size() - first);
+    if (!this->RenderDistanceMaps(s, first, count))
+    {
+      return false;
+    }
+    for (size_t k = 0; k < count; ++k)
+    {
+      this->FilterDistanceMap(context, static_cast<int>(first + k), in.DistanceMaps[k]);
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkContactHardeningShadowPass::RenderDistanceMaps(
+  const vtkRenderState* s, size_t first, size_t count)
+{
+  vtkInternals& in = *this->Internals;
+  const auto& lights = this->Maps->GetLights();
+  in.CameraPassFirst = first;
+  in.CameraPassUnits.clear();
+  for (size_t k = 0; k < count; ++k)
+  {
+    // 2D maps are read through the non-comparing sampler; cube maps hold
+    // distances already.
+    const auto& light = lights[first + k];
+    vtkTextureObject* map = light.Point ? light.CubeMap : light.DepthMap;
+    map->Activate();
+    in.CameraPassUnits.push_back(map->GetTextureUnit());
+    if (!light.Point)
+    {
+      glBindSampler(map->GetTextureUnit(), in.RawDepthSampler);
+    }
+  }
+  const bool ok = this->RenderCameraDepth(
+    s, std::vector<vtkTextureObject*>(in.DistanceMaps.begin(), in.DistanceMaps.begin() + count));
+  for (size_t k = 0; k < count; ++k)
+  {
+    const auto& light = lights[first + k];
+    if (!light.Point)
+    {
+      glBindSampler(in.CameraPassUnits[k], 0);
+    }
+    (light.Point ? light.CubeMap : light.DepthMap)->Deactivate();
+  }
+  in.CameraPassUnits.clear();
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkContactHardeningShadowPass::GetCameraPassDeclarations()
+{
+  const vtkInternals& in = *this->Internals;
+  const auto& lights = this->Maps->GetLights();
+  int maps = 0, cubes = 0;
+  for (size_t k = 0; k < in.CameraPassUnits.size(); ++k)
+  {
+    ++(lights[in.CameraPassFirst + k].Point ? cubes : maps);
+  }
+  std::ostringstream dec;
+  dec << "#define CONTACT_LIGHTS " << in.CameraPassUnits.size() << "\n"
+      << "#define CONTACT_MAPS " << maps << "\n"
+      << "#define CONTACT_CUBES " << cubes << "\n"
+      << vtkShadowNormalOffsetFS << "\n"
+      << vtkShadowCubeLookupFS << "\n"
+      << vtkContactDistanceFS << "\n";
+  return dec.str();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkContactHardeningShadowPass::GetCameraPassImplementation()
+{
+  const vtkInternals& in = *this->Internals;
+  const auto& lights = this->Maps->GetLights();
+  std::ostringstream impl;
+  int maps = 0, cubes = 0;
+  for (size_t k = 0; k < in.CameraPassUnits.size(); ++k)
+  {
+    const bool point = lights[in.CameraPassFirst + k].Point;
+    impl << "  gl_FragData[" << k << "] = vtkContactDistance("
+         << (point ? "contactLightCube[" : "contactLightDepth[") << (point ? cubes++ : maps++)
+         << "], " << k << ", vtkShadowPositionWC, vtkShadowNormalWC);\n";
+  }
+  return impl.str();
+}
+
+//------------------------------------------------------------------------------
+void vtkContactHardeningShadowPass::SetCameraPassUniforms(vtkShaderProgram* program)
+{
+  const vtkInternals& in = *this->Internals;
+  const auto& lights = this->Maps->GetLights();
+  int maps = 0, cubes = 0;
+  for (size_t k = 0; k < in.CameraPassUnits.size(); ++k)
+  {
+    const auto& light = lights[in.CameraPassFirst + k];
+    const std::string index = "[" + std::to_string(k) + "]";
+    if (light.Point)
+    {
+      program->SetUniformi(
+        ("contactLightCube[" + std::to_string(cubes++) + "]").c_str(), in.CameraPassUnits[k]);
+      const glm::vec3 center(light.Position);
+      program->SetUniform3f(("contactCubeCenter" + index).c_str(), glm::value_ptr(center));
+      const double far = light.Faces[0].Far;
+      program->SetUniformf(("contactCubeRange" + index).c_str(),
+        this->PackedCubeMaps ? static_cast<float>(far * far) : 0.0f);
+    }
+    else
+    {
+      program->SetUniformi(
+        ("contactLightDepth[" + std::to_string(maps++) + "]").c_str(), in.CameraPassUnits[k]);
+      vtkShadowMapManager::SetFrustumUniforms(program, "contact", index, light.Map, this->MapSize);
+      const glm::vec2 range(light.Map.Near, light.Map.Far);
+      program->SetUniform2f(("contactDepthRange" + index).c_str(), glm::value_ptr(range));
+    }
+    const double size =
+      light.Directional ? 2.0 * std::tan(glm::radians(light.Radius)) : 2.0 * light.Radius;
+    program->SetUniformf(("contactLightSize" + index).c_str(), static_cast<float>(size));
+  }
+  program->SetUniformf("contactCubeTexel", 2.0f / static_cast<float>(this->MapSize));
+  program->SetUniformf("contactDistanceBias", static_cast<float>(this->DistanceBias));
+  program->SetUniformf("contactNormalBias", static_cast<float>(this->NormalBias));
+  program->SetUniformi("useLightSize", this->UseLightSize ? 1 : 0);
+  program->SetUniformf("distancePower", static_cast<float>(this->DistancePower));
+  program->SetUniformf("distanceMultiplier", static_cast<float>(this->DistanceMultiplier));
+  program->SetUniform2f("pixelFootprint", glm::value_ptr(in.PixelFootprint));
+  program->SetUniformi("countPasses", this->Variant == MultiPass ? 1 : 0);
+  program->SetUniformf("resolutionDivisor", static_cast<float>(this->ResolutionDivisor));
+  program->SetUniformi("passLimit", this->PassLimit);
+  program->SetUniform1fv(
+    "passMidpoints", static_cast<int>(in.PassMidpoints.size()), in.PassMidpoints.data());
+}
+
+//------------------------------------------------------------------------------
+void vtkContactHardeningShadowPass::FilterDistanceMap(
+  vtkOpenGLRenderWindow* context, int slot, vtkTextureObject* distance)
+{
+  vtkInternals& in = *this->Internals;
+  const int w = this->Screen->GetWidth();
+  const int h = this->Screen->GetHeight();
+  const int tilesW = static_cast<int>(in.TileMaps[0]->GetWidth());
+  const int tilesH = static_cast<int>(in.TileMaps[0]->GetHeight());
   float kernelVariance = 0.0f;
   const std::vector<float> taps = in.Taps(this->PoissonTaps, kernelVariance);
   const float tolerance = 0.1f;
@@ -259,178 +461,144 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
   vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
   state->vtkglDisable(GL_BLEND);
   state->PushFramebufferBindings();
-
-  auto& lights = this->Maps->GetLights();
-  for (size_t slot = 0; slot < lights.size(); ++slot)
-  {
-    const auto& light = lights[slot];
-
-    // Pass 2: the distance map, into Maps[0]. 2D maps are read through the
-    // non-comparing sampler; cube maps hold distances already.
-    in.Target(context, w, h, in.Maps[0]);
-    vtkTextureObject* map = light.Point ? light.CubeMap : light.DepthMap;
-    map->Activate();
-    const int unit = map->GetTextureUnit();
-    if (!light.Point)
+  // Which tiles the early-out's and the dilation's neighbourhoods find all
+  // shadowed, or partly shadowed.
+  in.Target(context, tilesW, tilesH, in.TileMaps[0]);
+  int bilinearUnit = -1;
+  in.Draw(
+    this->Screen.get(), in.Tiles, distance,
+    [&](vtkShaderProgram* program)
     {
-      glBindSampler(unit, in.RawDepthSampler);
+      bilinearUnit = distance->GetTextureUnit();
+      glBindSampler(bilinearUnit, in.BilinearSampler);
+      program->SetUniformi("contactTileSize", TileSize);
+    },
+    tolerance, this->DebugView);
+  glBindSampler(bilinearUnit, 0);
+  in.Untarget();
+  in.Target(context, tilesW, tilesH, in.TileMaps[1]);
+  in.Draw(
+    this->Screen.get(), in.TileSpread, in.TileMaps[0],
+    [&](vtkShaderProgram* program)
+    {
+      const int earlyOutReach = this->EarlyOutKernelSize / 2;
+      const int dilationReach = (this->DilationSize + 1) / 2;
+      program->SetUniformi("earlyOutTiles", (earlyOutReach + TileSize - 1) / TileSize);
+      program->SetUniformi("dilationTiles", (dilationReach + TileSize - 1) / TileSize);
+    },
+    tolerance, this->DebugView);
+  in.Untarget();
+
+  // The ping-pong pair. The multi-pass variant's last blur target is the
+  // receivers' visibility texture (the filtering layout is theirs), so no
+  // pass copies it there.
+  vtkTextureObject* visibility = this->Screen->GetVisibility(slot);
+  const bool blursIntoVisibility = this->Variant == MultiPass && !this->DebugView;
+  std::array<vtkTextureObject*, 2> pair = { in.Maps[0], in.Maps[1] };
+  if (blursIntoVisibility)
+  {
+    pair[this->PassLimit % 2] = visibility;
+  }
+
+  auto toVisibility = [&](std::unique_ptr<vtkOpenGLQuadHelper>& quad, vtkTextureObject* input,
+                        const std::function<void(vtkShaderProgram*)>& uniforms)
+  {
+    in.Target(context, w, h, visibility);
+    in.Draw(this->Screen.get(), quad, input, uniforms, tolerance, this->DebugView);
+    in.Untarget();
+  };
+
+  // Umbra early-out and pass 3, into both.
+  in.Target(context, w, h, pair[0], pair[1], true);
+  in.TileMaps[1]->Activate();
+  in.Draw(
+    this->Screen.get(), in.Prepare, distance,
+    [&](vtkShaderProgram* program)
+    {
+      program->SetUniformi("contactTiles", in.TileMaps[1]->GetTextureUnit());
+      program->SetUniformi("contactTileSize", TileSize);
+      program->SetUniformi("earlyOut", this->UmbraEarlyOut ? 1 : 0);
+      program->SetUniformi("dilation", this->Dilation ? 1 : 0);
+      program->SetUniformf("dilationSize", static_cast<float>(this->DilationSize));
+      program->SetUniform3fv("taps", this->PoissonTaps, taps.data());
+      program->SetUniformi("tapCount", this->PoissonTaps);
+    },
+    tolerance, this->DebugView, vtkShadowScreenBuffers::QuadMask::Write);
+  in.TileMaps[1]->Deactivate();
+  in.Untarget();
+
+  // Pass 4, then pass 5's visibility.
+  if (this->Variant == MultiPass)
+  {
+    // Pass k draws only the pixels the prepare pass's depth lets through
+    // (D > k - 1), and only if pass k - 1 drew any: passes after the
+    // widest penumbra's cost nothing. The condition stays on the GPU. A
+    // pixel's last blur is followed by a pass that copies it into the
+    // other buffer, unless the pass limit comes first; either way the last
+    // target, pair[PassLimit % 2], holds every pixel's final value.
+    if (!in.Queries[0])
+    {
+      glGenQueries(2, in.Queries);
     }
+    for (int pass = 0; pass < this->PassLimit; ++pass)
+    {
+      const int size = this->KernelSize(pass);
+      if (pass > 0)
+      {
+        glBeginConditionalRender(in.Queries[(pass - 1) % 2], GL_QUERY_WAIT);
+      }
+      glBeginQuery(GL_SAMPLES_PASSED, in.Queries[pass % 2]);
+      in.Target(context, w, h, pair[(pass + 1) % 2], nullptr, true);
+      in.Draw(
+        this->Screen.get(), in.MultiPass, pair[pass % 2],
+        [&](vtkShaderProgram* program)
+        {
+          program->SetUniform3fv("taps", this->PoissonTaps, taps.data());
+          program->SetUniformi("tapCount", this->PoissonTaps);
+          program->SetUniformf("kernelSize", static_cast<float>(size));
+        },
+        tolerance, this->DebugView, vtkShadowScreenBuffers::QuadMask::Test,
+        1.0f - static_cast<float>(pass) / 256.0f);
+      in.Untarget();
+      glEndQuery(GL_SAMPLES_PASSED);
+      if (pass > 0)
+      {
+        glEndConditionalRender();
+      }
+    }
+    if (!blursIntoVisibility)
+    {
+      toVisibility(in.Resolve, pair[this->PassLimit % 2], [](vtkShaderProgram*) {});
+    }
+  }
+  else if (this->Variant == Gaussian)
+  {
+    in.Target(context, w, h, in.Maps[1]);
     in.Draw(
-      this->Screen.get(), light.Point ? in.DistanceCube : in.Distance, nullptr,
+      this->Screen.get(), in.Gaussian, in.Maps[0],
       [&](vtkShaderProgram* program)
       {
-        if (light.Point)
-        {
-          program->SetUniformi("lightCube", unit);
-          const float center[3] = { static_cast<float>(light.Position.x),
-            static_cast<float>(light.Position.y), static_cast<float>(light.Position.z) };
-          program->SetUniform3f("cubeCenter", center);
-          program->SetUniformf("cubeTexel", 2.0f / static_cast<float>(this->MapSize));
-          const double far = light.Faces[0].Far;
-          program->SetUniformf(
-            "cubeRange", this->PackedCubeMaps ? static_cast<float>(far * far) : 0.0f);
-          program->SetUniformf("distanceBias", static_cast<float>(this->DistanceBias));
-        }
-        else
-        {
-          program->SetUniformi("lightDepth", unit);
-          vtkShadowMapManager::SetFrustumUniforms(program, "map", "", light.Map, this->MapSize);
-          float range[2] = { static_cast<float>(light.Map.Near),
-            static_cast<float>(light.Map.Far) };
-          program->SetUniform2f("mapDepthRange", range);
-        }
-        program->SetUniformf("normalBias", static_cast<float>(this->NormalBias));
-        program->SetUniformi("useLightSize", this->UseLightSize ? 1 : 0);
-        const double size =
-          light.Directional ? 2.0 * std::tan(glm::radians(light.Radius)) : 2.0 * light.Radius;
-        program->SetUniformf("lightSize", static_cast<float>(size));
-        program->SetUniformf("distancePower", static_cast<float>(this->DistancePower));
-        program->SetUniformf("distanceMultiplier", static_cast<float>(this->DistanceMultiplier));
-        program->SetUniform2f("pixelFootprint", pixelFootprint);
-        program->SetUniformi("countPasses", this->Variant == MultiPass ? 1 : 0);
-        program->SetUniformf("resolutionDivisor", static_cast<float>(this->ResolutionDivisor));
-        program->SetUniformi("passLimit", this->PassLimit);
-        program->SetUniformi("minimumKernel", this->MinimumKernelSize);
         program->SetUniformi("maximumKernel", this->MaximumKernelSize);
-        program->SetUniformi("growingKernel", this->GrowingKernel ? 1 : 0);
-        program->SetUniformf("kernelVariance", kernelVariance);
+        program->SetUniform2i("direction", std::array<int, 2>{ 1, 0 }.data());
+        program->SetUniformi("lastPass", 0);
       },
       tolerance, this->DebugView);
-    if (!light.Point)
-    {
-      glBindSampler(unit, 0);
-    }
-    map->Deactivate();
     in.Untarget();
-
-    // Umbra early-out and pass 3, into both ping-pong buffers.
-    in.Target(context, w, h, in.Maps[1], in.Maps[2], true);
-    in.Draw(
-      this->Screen.get(), in.Prepare, in.Maps[0],
+    toVisibility(in.Gaussian, in.Maps[1],
       [&](vtkShaderProgram* program)
       {
-        program->SetUniformi("earlyOut", this->UmbraEarlyOut ? 1 : 0);
-        program->SetUniformi("earlyOutRadius", this->EarlyOutKernelSize / 2);
-        program->SetUniformi("dilation", this->Dilation ? 1 : 0);
-        program->SetUniformf("dilationSize", static_cast<float>(this->DilationSize));
-        program->SetUniform3fv("taps", this->PoissonTaps, taps.data());
-        program->SetUniformi("tapCount", this->PoissonTaps);
-      },
-      tolerance, this->DebugView, vtkShadowScreenBuffers::QuadMask::Write);
-    in.Untarget();
-
-    // Pass 4, and pass 5's visibility into the framework's texture.
-    vtkTextureObject* last = in.Maps[1];
-    if (this->Variant == MultiPass)
-    {
-      // Pass k draws only the pixels the prepare pass's depth lets through
-      // (D > k - 1), and only if pass k - 1 drew any: passes after the
-      // widest penumbra's cost nothing. The condition stays on the GPU. A
-      // pixel's last blur is followed by a pass that copies it into the
-      // other buffer, unless the pass limit comes first; either way the last
-      // target holds every pixel's final value.
-      if (!in.Queries[0])
-      {
-        glGenQueries(2, in.Queries);
-      }
-      for (int pass = 0; pass < this->PassLimit; ++pass)
-      {
-        vtkTextureObject* source = in.Maps[1 + pass % 2];
-        vtkTextureObject* target = in.Maps[1 + (pass + 1) % 2];
-        const int size = this->GrowingKernel
-          ? std::min(this->MinimumKernelSize + 2 * pass, this->MaximumKernelSize)
-          : this->MaximumKernelSize;
-        if (pass > 0)
-        {
-          glBeginConditionalRender(in.Queries[(pass - 1) % 2], GL_QUERY_WAIT);
-        }
-        glBeginQuery(GL_SAMPLES_PASSED, in.Queries[pass % 2]);
-        in.Target(context, w, h, target, nullptr, true);
-        in.Draw(
-          this->Screen.get(), in.MultiPass, source,
-          [&](vtkShaderProgram* program)
-          {
-            program->SetUniform3fv("taps", this->PoissonTaps, taps.data());
-            program->SetUniformi("tapCount", this->PoissonTaps);
-            program->SetUniformf("kernelSize", static_cast<float>(size));
-          },
-          tolerance, this->DebugView, vtkShadowScreenBuffers::QuadMask::Test,
-          1.0f - static_cast<float>(pass) / 256.0f);
-        in.Untarget();
-        glEndQuery(GL_SAMPLES_PASSED);
-        if (pass > 0)
-        {
-          glEndConditionalRender();
-        }
-      }
-      last = in.Maps[1 + this->PassLimit % 2];
-    }
-    else if (this->Variant == Gaussian)
-    {
-      in.Target(context, w, h, in.Maps[2]);
-      in.Draw(
-        this->Screen.get(), in.Gaussian, in.Maps[1],
-        [&](vtkShaderProgram* program)
-        {
-          program->SetUniformi("maximumKernel", this->MaximumKernelSize);
-          program->SetUniform2i("direction", std::array<int, 2>{ 1, 0 }.data());
-          program->SetUniformi("lastPass", 0);
-        },
-        tolerance, this->DebugView);
-      in.Untarget();
-      last = in.Maps[2];
-    }
-
-    this->Screen->BeginVisibility(static_cast<int>(slot), 1.0f);
-    if (this->Variant == PCF)
-    {
-      in.Draw(
-        this->Screen.get(), in.PCF, last,
-        [&](vtkShaderProgram* program)
-        { program->SetUniformi("maximumKernel", this->MaximumKernelSize); },
-        tolerance, this->DebugView);
-    }
-    else if (this->Variant == Gaussian)
-    {
-      in.Draw(
-        this->Screen.get(), in.Gaussian, last,
-        [&](vtkShaderProgram* program)
-        {
-          program->SetUniformi("maximumKernel", this->MaximumKernelSize);
-          program->SetUniform2i("direction", std::array<int, 2>{ 0, 1 }.data());
-          program->SetUniformi("lastPass", 1);
-        },
-        tolerance, this->DebugView);
-    }
-    else
-    {
-      in.Draw(
-        this->Screen.get(), in.Resolve, last, [](vtkShaderProgram*) {}, tolerance, this->DebugView);
-    }
-    this->Screen->EndVisibility();
+        program->SetUniformi("maximumKernel", this->MaximumKernelSize);
+        program->SetUniform2i("direction", std::array<int, 2>{ 0, 1 }.data());
+        program->SetUniformi("lastPass", 1);
+      });
+  }
+  else
+  {
+    toVisibility(in.PCF, in.Maps[0],
+      [&](vtkShaderProgram* program)
+      { program->SetUniformi("maximumKernel", this->MaximumKernelSize); });
   }
   state->PopFramebufferBindings();
-  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -438,12 +606,17 @@ void vtkContactHardeningShadowPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);
   vtkInternals& in = *this->Internals;
-  for (auto* quad : { &in.Distance, &in.DistanceCube, &in.Prepare, &in.MultiPass, &in.PCF,
-         &in.Gaussian, &in.Resolve })
+  for (auto* quad :
+    { &in.Tiles, &in.TileSpread, &in.Prepare, &in.MultiPass, &in.PCF, &in.Gaussian, &in.Resolve })
   {
     quad->reset();
   }
-  for (auto* texture : { &in.Maps[0], &in.Maps[1], &in.Maps[2], &in.Mask })
+  for (auto& texture : in.DistanceMaps)
+  {
+    texture->ReleaseGraphicsResources(w);
+  }
+  in.DistanceMaps.clear();
+  for (auto* texture : { &in.Maps[0], &in.Maps[1], &in.TileMaps[0], &in.TileMaps[1], &in.Mask })
   {
     if (*texture)
     {
@@ -459,7 +632,8 @@ void vtkContactHardeningShadowPass::ReleaseGraphicsResources(vtkWindow* w)
   if (in.RawDepthSampler)
   {
     glDeleteSamplers(1, &in.RawDepthSampler);
-    in.RawDepthSampler = 0;
+    glDeleteSamplers(1, &in.BilinearSampler);
+    in.RawDepthSampler = in.BilinearSampler = 0;
   }
   if (in.Queries[0])
   {

@@ -23,9 +23,13 @@
  * smaller than the viewport per axis: receivers upsample 1 - S along their
  * own surface, and wherever no blur reached (lit, deep umbra, and next to
  * contact, where D < 1) keep their own full-resolution hard shadow, so
- * contact edges stay as sharp as the shadow map. Multi-pass blurs draw only
- * the pixels still blurring (the depth buffer holds each pixel's pass count)
- * and stop, on the GPU, once no pixel is left.
+ * contact edges stay as sharp as the shadow map. Pass 2 runs inside the
+ * camera depth pass, on the geometry's own positions and normals, for up to
+ * 8 lights at once. The early-out and the dilation look up a classification
+ * of 8x8-pixel tiles rather than loop over taps everywhere. Multi-pass blurs
+ * draw only the pixels still blurring (the depth buffer holds each pixel's
+ * pass count), stop, on the GPU, once no pixel is left, and the last one
+ * writes the receivers' texture.
  *
  * D comes either from the paper's D = (occluder distance)^Dp * Dm
  * (UseLightSize off: DistancePower and DistanceMultiplier, tuned per scene), or,
@@ -148,9 +152,10 @@ public:
 
   ///@{
   /**
-   * Umbra early-out: D = 0 where every tap over EarlyOutKernelSize pixels
-   * (which should exceed MaximumKernelSize) is shadowed, so blurs skip the
-   * inside of the umbra. Defaults on, 25.
+   * Umbra early-out: D = 0 where every pixel of the EarlyOutKernelSize-wide
+   * square around (which should exceed MaximumKernelSize) is shadowed, so
+   * blurs skip the inside of the umbra; decided per 8x8-pixel tile, so the
+   * square may reach up to 7 pixels further. Defaults on, 25.
    */
   vtkSetMacro(UmbraEarlyOut, bool);
   vtkGetMacro(UmbraEarlyOut, bool);
@@ -193,6 +198,9 @@ protected:
   bool UsesScreenSpace() const override { return true; }
   bool SupportsPointLights() const override { return true; }
   int GetScreenResolutionDivisor() const override { return this->ResolutionDivisor; }
+  std::string GetCameraPassDeclarations() override;
+  std::string GetCameraPassImplementation() override;
+  void SetCameraPassUniforms(vtkShaderProgram* program) override;
 
   int Variant = MultiPass;
   bool UseLightSize = true;
@@ -213,6 +221,13 @@ protected:
 private:
   vtkContactHardeningShadowPass(const vtkContactHardeningShadowPass&) = delete;
   void operator=(const vtkContactHardeningShadowPass&) = delete;
+
+  /// The multi-pass variant's kernel size in pass `pass` (from 0).
+  int KernelSize(int pass) const;
+  /// Pass 2 for lights [first, first + count), drawn with the camera depth.
+  bool RenderDistanceMaps(const vtkRenderState* s, size_t first, size_t count);
+  /// Early-out, dilation, filtering and the visibility of light `slot`.
+  void FilterDistanceMap(vtkOpenGLRenderWindow* context, int slot, vtkTextureObject* distance);
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

@@ -79,6 +79,10 @@ bool vtkReferenceShadowPass::RenderScreenSpace(const vtkRenderState* s)
     return false;
   }
 
+  if (!this->RenderCameraDepth(s))
+  {
+    return false;
+  }
   auto& lights = this->Maps->GetLights();
   for (size_t slot = 0; slot < lights.size(); ++slot)
   {

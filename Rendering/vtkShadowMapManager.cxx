@@ -307,16 +307,18 @@ bool vtkShadowMapManager::RenderDepth(const vtkRenderState* s, vtkSoftShadowPass
   vtkRenderer* renderer = s->GetRenderer();
   vtkSmartPointer<vtkCamera> viewCamera = renderer->GetActiveCamera();
   renderer->SetActiveCamera(this->LightCamera);
-  const bool ok = this->DrawDepth(s, pass, target, true, true);
+  const bool ok =
+    this->DrawDepth(s, pass, target, true, true, vtkSoftShadowPass::Stage::LightDepth);
   renderer->SetActiveCamera(viewCamera);
   return ok;
 }
 
 //------------------------------------------------------------------------------
-bool vtkShadowMapManager::RenderCameraDepth(
-  const vtkRenderState* s, vtkSoftShadowPass* pass, vtkTextureObject* target)
+bool vtkShadowMapManager::RenderCameraDepth(const vtkRenderState* s, vtkSoftShadowPass* pass,
+  vtkTextureObject* target, const std::vector<vtkTextureObject*>& colourTargets)
 {
-  return this->DrawDepth(s, pass, target, false, false);
+  return this->DrawDepth(
+    s, pass, target, false, false, vtkSoftShadowPass::Stage::CameraDepth, colourTargets);
 }
 
 //------------------------------------------------------------------------------
@@ -394,7 +396,8 @@ bool vtkShadowMapManager::RenderDistanceCube(const vtkRenderState* s, vtkSoftSha
     vtkOpenGLState::ScopedglClearColor clearColor(state);
     const float far = pass->GetPackedCubeMaps() ? 1.0f : VTK_FLOAT_MAX;
     state->vtkglClearColor(far, far, far, far);
-    ok = this->DrawProps(s, pass, size, size, true, false, true);
+    ok = this->DrawProps(
+      s, pass, size, size, true, false, vtkSoftShadowPass::Stage::LightDistance, true);
     this->DepthFramebuffer->RemoveColorAttachment(0);
     this->DepthFramebuffer->RemoveDepthAttachment();
     renderer->SetActiveCamera(viewCamera);
@@ -469,7 +472,8 @@ bool vtkShadowMapManager::DrawLayeredCube(const vtkRenderState* s, vtkSoftShadow
     vtkOpenGLState::ScopedglClearColor clearColor(state);
     const float far = pass->GetPackedCubeMaps() ? 1.0f : VTK_FLOAT_MAX;
     state->vtkglClearColor(far, far, far, far);
-    ok = this->DrawProps(s, pass, size, size, true, false, true);
+    ok = this->DrawProps(
+      s, pass, size, size, true, false, vtkSoftShadowPass::Stage::LightDistance, true);
     renderer->SetActiveCamera(viewCamera);
     pass->LayeredFaces = false;
   }
@@ -485,7 +489,8 @@ bool vtkShadowMapManager::DrawLayeredCube(const vtkRenderState* s, vtkSoftShadow
 
 //------------------------------------------------------------------------------
 bool vtkShadowMapManager::DrawDepth(const vtkRenderState* s, vtkSoftShadowPass* pass,
-  vtkTextureObject* target, bool allProps, bool bias)
+  vtkTextureObject* target, bool allProps, bool bias, vtkSoftShadowPass::Stage stage,
+  const std::vector<vtkTextureObject*>& colourTargets)
 {
   auto* context = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
   if (!context || !target)
@@ -500,19 +505,36 @@ bool vtkShadowMapManager::DrawDepth(const vtkRenderState* s, vtkSoftShadowPass* 
   context->GetState()->PushFramebufferBindings();
   this->DepthFramebuffer->Bind();
   this->DepthFramebuffer->AddDepthAttachment(target);
-  this->DepthFramebuffer->DeactivateDrawBuffers();
+  const auto colours = static_cast<unsigned int>(colourTargets.size());
+  for (unsigned int i = 0; i < colours; ++i)
+  {
+    this->DepthFramebuffer->AddColorAttachment(i, colourTargets[i]);
+  }
+  if (colours > 0)
+  {
+    this->DepthFramebuffer->ActivateDrawBuffers(colours);
+  }
+  else
+  {
+    this->DepthFramebuffer->DeactivateDrawBuffers();
+  }
+  vtkOpenGLState::ScopedglClearColor clearColor(context->GetState());
+  context->GetState()->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+  pass->CameraPassTargets = static_cast<int>(colours);
   const bool ok = this->DrawProps(s, pass, static_cast<int>(target->GetWidth()),
-    static_cast<int>(target->GetHeight()), allProps, bias, false);
+    static_cast<int>(target->GetHeight()), allProps, bias, stage, colours > 0);
+  pass->CameraPassTargets = 0;
+  this->DepthFramebuffer->RemoveColorAttachments(colours);
   this->DepthFramebuffer->RemoveDepthAttachment();
   context->GetState()->PopFramebufferBindings();
   return ok;
 }
 
 //------------------------------------------------------------------------------
-// Draws the props into the bound framebuffer: depth only, or (`colour`) the
-// squared distance each fragment lies from the camera.
+// Draws the props into the bound framebuffer with the pass in `stage`;
+// colour writes only when `colour` (cleared first).
 bool vtkShadowMapManager::DrawProps(const vtkRenderState* s, vtkSoftShadowPass* pass, int width,
-  int height, bool allProps, bool bias, bool colour)
+  int height, bool allProps, bool bias, vtkSoftShadowPass::Stage stage, bool colour)
 {
   vtkRenderer* renderer = s->GetRenderer();
   auto* context = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
@@ -570,8 +592,7 @@ bool vtkShadowMapManager::DrawProps(const vtkRenderState* s, vtkSoftShadowPass* 
   vtkRenderState depthState(renderer);
   depthState.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
   depthState.SetFrameBuffer(this->DepthFramebuffer);
-  pass->SetStage(
-    colour ? vtkSoftShadowPass::Stage::LightDistance : vtkSoftShadowPass::Stage::LightDepth);
+  pass->SetStage(stage);
   pass->PreRender(&depthState);
   for (vtkProp* prop : props)
   {

@@ -12,6 +12,7 @@
 #define vtkShadowMapManager_h
 
 #include "vtkSmartPointer.h"
+#include "vtkSoftShadowPass.h" // for vtkSoftShadowPass::Stage
 
 #include <glm/mat4x4.hpp> // for glm::dmat4
 #include <glm/vec3.hpp>   // for glm::dvec3
@@ -127,10 +128,11 @@ public:
 
   /**
    * Draw the depth of the props of `s` through the renderer's own camera into
-   * `target` (sized as the renderer's viewport). No bias.
+   * `target` (a depth texture), and, with the technique's camera pass code,
+   * into `colourTargets` (cleared to 0 first). No bias.
    */
-  bool RenderCameraDepth(
-    const vtkRenderState* s, vtkSoftShadowPass* pass, vtkTextureObject* target);
+  bool RenderCameraDepth(const vtkRenderState* s, vtkSoftShadowPass* pass, vtkTextureObject* target,
+    const std::vector<vtkTextureObject*>& colourTargets);
 
   /**
    * Upload what shaders need of a frustum for lookups with normal offset
@@ -146,9 +148,10 @@ private:
   glm::dvec3 SceneCenter() const;
   void SetCamera(const Frustum& frustum);
   bool DrawProps(const vtkRenderState* s, vtkSoftShadowPass* pass, int width, int height,
-    bool allProps, bool bias, bool colour);
+    bool allProps, bool bias, vtkSoftShadowPass::Stage stage, bool colour);
   bool DrawDepth(const vtkRenderState* s, vtkSoftShadowPass* pass, vtkTextureObject* target,
-    bool allProps, bool bias);
+    bool allProps, bool bias, vtkSoftShadowPass::Stage stage,
+    const std::vector<vtkTextureObject*>& colourTargets = {});
 
   vtkRenderer* Renderer = nullptr; ///< of the last Update(), not owned
   std::vector<Light> Lights;

@@ -25,7 +25,7 @@ vtkShadowScreenBuffers::vtkShadowScreenBuffers() = default;
 vtkShadowScreenBuffers::~vtkShadowScreenBuffers() = default;
 
 //------------------------------------------------------------------------------
-bool vtkShadowScreenBuffers::RenderCameraDepth(const vtkRenderState* s, vtkSoftShadowPass* pass)
+bool vtkShadowScreenBuffers::Update(const vtkRenderState* s)
 {
   vtkRenderer* renderer = s->GetRenderer();
   auto* context = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
@@ -74,7 +74,15 @@ bool vtkShadowScreenBuffers::RenderCameraDepth(const vtkRenderState* s, vtkSoftS
       this->ClipToWorld[col * 4 + row] = static_cast<float>(clipToWorld->GetElement(row, col));
     }
   }
-  return pass->Maps->RenderCameraDepth(s, pass, this->CameraDepth);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowScreenBuffers::RenderCameraDepth(const vtkRenderState* s, vtkSoftShadowPass* pass,
+  const std::vector<vtkTextureObject*>& colourTargets)
+{
+  return this->CameraDepth &&
+    pass->Maps->RenderCameraDepth(s, pass, this->CameraDepth, colourTargets);
 }
 
 //------------------------------------------------------------------------------
@@ -130,7 +138,7 @@ void vtkShadowScreenBuffers::DrawQuad(vtkOpenGLQuadHelper* quad,
 }
 
 //------------------------------------------------------------------------------
-void vtkShadowScreenBuffers::BeginVisibility(int slot, float clear)
+vtkTextureObject* vtkShadowScreenBuffers::GetVisibility(int slot)
 {
   while (static_cast<int>(this->Visibility.size()) <= slot)
   {
@@ -146,6 +154,13 @@ void vtkShadowScreenBuffers::BeginVisibility(int slot, float clear)
     texture->Allocate2D(this->Width, this->Height, 4, VTK_FLOAT);
     this->Visibility.push_back(texture);
   }
+  return this->Visibility[slot];
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenBuffers::BeginVisibility(int slot, float clear)
+{
+  vtkTextureObject* visibility = this->GetVisibility(slot);
   if (!this->Framebuffer)
   {
     this->Framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
@@ -154,7 +169,7 @@ void vtkShadowScreenBuffers::BeginVisibility(int slot, float clear)
   vtkOpenGLState* state = this->Context->GetState();
   state->PushFramebufferBindings();
   this->Framebuffer->Bind();
-  this->Framebuffer->AddColorAttachment(0, this->Visibility[slot]);
+  this->Framebuffer->AddColorAttachment(0, visibility);
   this->Framebuffer->ActivateDrawBuffers(1);
   state->vtkglViewport(0, 0, this->Width, this->Height);
   state->vtkglScissor(0, 0, this->Width, this->Height);

@@ -43,10 +43,18 @@ public:
   void SetResolutionDivisor(int divisor) { this->Divisor = divisor < 1 ? 1 : divisor; }
 
   /**
-   * Size the buffers to the renderer's viewport and draw the depth of its
-   * opaque props through its camera.
+   * Size the buffers to the renderer's viewport and take this frame's
+   * camera. Before any screen-space pass.
    */
-  bool RenderCameraDepth(const vtkRenderState* s, vtkSoftShadowPass* pass);
+  bool Update(const vtkRenderState* s);
+
+  /**
+   * Draw the depth of the opaque props through the camera; fragments also
+   * write `colourTargets` (the buffers' size) when the technique gives camera
+   * pass code (vtkSoftShadowPass::GetCameraPassImplementation()).
+   */
+  bool RenderCameraDepth(const vtkRenderState* s, vtkSoftShadowPass* pass,
+    const std::vector<vtkTextureObject*>& colourTargets);
 
   int GetWidth() const { return this->Width; }
   int GetHeight() const { return this->Height; }
@@ -89,6 +97,13 @@ public:
    */
   void BeginVisibility(int slot, float clear);
   void EndVisibility();
+
+  /**
+   * Light `slot`'s visibility texture (as above), allocated on demand, for a
+   * technique that draws into it with its own framebuffer: every texel must
+   * be written, nothing clears it.
+   */
+  vtkTextureObject* GetVisibility(int slot);
 
   ///@{
   /** Receivers: bind the textures and upload their uniforms. */

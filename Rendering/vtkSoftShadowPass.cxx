@@ -67,6 +67,15 @@ void SetMatrix(vtkShaderProgram* program, const std::string& name, const glm::dm
   program->SetUniformMatrix4x4(name.c_str(), glm::value_ptr(single));
 }
 
+// The fragment's world position and geometric normal from derivatives: the
+// face's true orientation, which the normal offset needs (interpolated
+// normals lie on coarse meshes). Derivatives of the triangle's own
+// interpolants: right at silhouettes too, unlike a depth buffer's.
+const char* const SurfaceCode =
+  "  vec4 vtkShadowPositionWC = vtkShadowViewToWorld * vec4(vertexVCVSOutput.xyz, 1.0);\n"
+  "  vec3 vtkShadowNormalWC = normalize(mat3(vtkShadowViewToWorld) *\n"
+  "    cross(dFdx(vertexVCVSOutput.xyz), dFdy(vertexVCVSOutput.xyz)));\n";
+
 std::string Indexed(const char* name, int i)
 {
   return std::string(name) + "[" + std::to_string(i) + "]";
@@ -189,7 +198,7 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   if (drawn && this->UsesScreenSpace())
   {
     this->Screen->SetResolutionDivisor(this->GetScreenResolutionDivisor());
-    drawn = this->Screen->RenderCameraDepth(s, this) && this->RenderScreenSpace(s);
+    drawn = this->Screen->Update(s) && this->RenderScreenSpace(s);
   }
   if (!drawn)
   {
@@ -285,6 +294,21 @@ bool vtkSoftShadowPass::RenderLightDepthMaps(const vtkRenderState* s, bool linea
 }
 
 //------------------------------------------------------------------------------
+bool vtkSoftShadowPass::RenderCameraDepth(
+  const vtkRenderState* s, const std::vector<vtkTextureObject*>& targets)
+{
+  if (!targets.empty())
+  {
+    // Mappers write lighting code, where the camera pass code goes, only for
+    // the renderer's lighting complexity, which its lights pass updates
+    // later in the frame (and on the first frame, not yet at all).
+    this->UpdateLightGeometry(s->GetRenderer());
+    this->UpdateLights(s->GetRenderer());
+  }
+  return this->Screen->RenderCameraDepth(s, this, targets);
+}
+
+//------------------------------------------------------------------------------
 void vtkSoftShadowPass::RenderDepthPrePass(const vtkRenderState* s)
 {
   // The props carry this pass already (receivers): only the stage changes,
@@ -373,6 +397,12 @@ bool vtkSoftShadowPass::PreReplaceShaderValues(std::string&, std::string& geomet
         "  return;\n  //VTK::Light::Impl",
         false);
       break;
+    case Stage::CameraDepth:
+      vtkShaderProgram::Substitute(
+        fragmentShader, "//VTK::Light::Dec", "//VTK::SoftShadow::Dec\n//VTK::Light::Dec", false);
+      vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Impl",
+        "//VTK::SoftShadow::Impl\n  return;\n  //VTK::Light::Impl", false);
+      break;
     case Stage::Receivers:
       vtkShaderProgram::Substitute(
         fragmentShader, "//VTK::Light::Dec", "//VTK::SoftShadow::Dec\n//VTK::Light::Dec", false);
@@ -389,14 +419,33 @@ bool vtkSoftShadowPass::PreReplaceShaderValues(std::string&, std::string& geomet
 bool vtkSoftShadowPass::PostReplaceShaderValues(
   std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
 {
+  // Without lighting the mapper declares no view-space position: nothing to
+  // shadow, and such fragments count as lit.
+  const bool lit = fragmentShader.find("vertexVCVSOutput") != std::string::npos;
+  if (this->CurrentStage == Stage::CameraDepth)
+  {
+    std::string dec, impl;
+    if (this->CameraPassTargets > 0 && lit)
+    {
+      dec = "uniform mat4 vtkShadowViewToWorld;\n" + this->GetCameraPassDeclarations();
+      impl = std::string(SurfaceCode) + this->GetCameraPassImplementation();
+    }
+    else
+    {
+      for (int i = 0; i < std::max(this->CameraPassTargets, 1); ++i)
+      {
+        impl += "  gl_FragData[" + std::to_string(i) + "] = vec4(0.0);\n";
+      }
+    }
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::SoftShadow::Dec", dec, false);
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::SoftShadow::Impl", impl, false);
+    return true;
+  }
   if (this->CurrentStage != Stage::Receivers)
   {
     return true;
   }
   const auto& lights = this->Maps->GetLights();
-  // Without lighting the mapper declares no view-space position: nothing to
-  // shadow, and such fragments count as lit.
-  const bool lit = fragmentShader.find("vertexVCVSOutput") != std::string::npos;
   const bool active = lit && !lights.empty();
 
   std::string onlyVisibility = "1.0";
@@ -417,11 +466,7 @@ bool vtkSoftShadowPass::PostReplaceShaderValues(
         << vtkSoftShadowReceiverFS << "\n"
         << this->GetVisibilityDeclarations() << "\n";
 
-    // Geometric normal from derivatives: the face's true orientation, which
-    // the normal offset needs (interpolated normals lie on coarse meshes).
-    impl << "  vec4 vtkShadowPositionWC = vtkShadowViewToWorld * vec4(vertexVCVSOutput.xyz, 1.0);\n"
-            "  vec3 vtkShadowNormalWC = normalize(mat3(vtkShadowViewToWorld) *\n"
-            "    cross(dFdx(vertexVCVSOutput.xyz), dFdy(vertexVCVSOutput.xyz)));\n";
+    impl << SurfaceCode;
     for (size_t slot = 0; slot < lights.size(); ++slot)
     {
       const int n = lights[slot].ShaderIndex;
@@ -476,14 +521,20 @@ bool vtkSoftShadowPass::SetShaderParameters(
     }
     return true;
   }
-  if (this->CurrentStage != Stage::Receivers || !program->IsUniformUsed("vtkShadowViewToWorld"))
+  const bool camera = this->CurrentStage == Stage::CameraDepth;
+  if (!(camera || this->CurrentStage == Stage::Receivers) ||
+    !program->IsUniformUsed("vtkShadowViewToWorld"))
   {
     return true;
   }
   vtkRenderer* renderer = this->Maps->GetRenderer();
-  vtkCamera* camera = renderer->GetActiveCamera();
-  SetMatrix(
-    program, "vtkShadowViewToWorld", glm::inverse(ToGlm(camera->GetModelViewTransformMatrix())));
+  SetMatrix(program, "vtkShadowViewToWorld",
+    glm::inverse(ToGlm(renderer->GetActiveCamera()->GetModelViewTransformMatrix())));
+  if (camera)
+  {
+    this->SetCameraPassUniforms(program);
+    return true;
+  }
   program->SetUniformf("vtkShadowMapTexel", 1.0f / static_cast<float>(this->MapSize));
   program->SetUniformi("vtkShadowPCFRadius", this->GetPCFRadius());
   program->SetUniformi("vtkShadowPCFBilinear", this->GetPCFBilinear() ? 1 : 0);

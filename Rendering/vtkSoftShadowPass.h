@@ -9,7 +9,8 @@
  *  1. decide which lights cast shadows and fit their light-space frusta
  *     (spot: perspective; directional: orthographic around the scene),
  *  2. RenderShadowMaps(): the technique draws its light-space maps,
- *  3. RenderScreenSpace(): optional screen-space passes over the camera depth,
+ *  3. RenderScreenSpace(): optional screen-space passes over the camera depth
+ *     (RenderCameraDepth(), which can run technique code on every fragment),
  *  4. the scene is drawn through the DelegatePass (opaque, translucent,
  *     volumes, overlay) while this pass, registered on every prop, injects
  *     `vtkShadowFactorN` into the fragment shader of each
@@ -41,6 +42,7 @@
 #include <memory> // for std::unique_ptr
 #include <set>    // for std::set
 #include <string> // for std::string
+#include <vector> // for std::vector
 
 class vtkInformationDoubleKey;
 class vtkLight;
@@ -48,6 +50,7 @@ class vtkOpenGLRenderWindow;
 class vtkRenderer;
 class vtkShadowMapManager;
 class vtkShadowScreenBuffers;
+class vtkTextureObject;
 
 class VTKSOFTSHADOWSRENDERING_EXPORT vtkSoftShadowPass : public vtkOpenGLRenderPass
 {
@@ -202,6 +205,30 @@ protected:
   virtual bool UsesScreenSpace() const { return false; }
 
   /**
+   * Helper for RenderScreenSpace(): draw the camera depth of the opaque props
+   * into this->Screen. With `targets` (textures of this->Screen's size), each
+   * fragment the camera sees also runs GetCameraPassImplementation(), which
+   * writes gl_FragData[0 .. targets - 1]: per-pixel work done with the
+   * geometry's own position and normal instead of a full-screen pass
+   * rebuilding them from depth. Targets are cleared to 0 first; unlit
+   * fragments (no view-space position in the mapper) write 0.
+   */
+  bool RenderCameraDepth(
+    const vtkRenderState* s, const std::vector<vtkTextureObject*>& targets = {});
+
+  ///@{
+  /**
+   * The camera pass's code: declarations, and statements that see
+   * `vtkShadowPositionWC` (vec4) and `vtkShadowNormalWC` (the face's unit
+   * normal, towards the camera) and write every target; then the uniforms
+   * they need. Default: none.
+   */
+  virtual std::string GetCameraPassDeclarations() { return std::string(); }
+  virtual std::string GetCameraPassImplementation() { return std::string(); }
+  virtual void SetCameraPassUniforms(vtkShaderProgram*) {}
+  ///@}
+
+  /**
    * Screen-space passes run on buffers this many times smaller than the
    * viewport on each axis; receivers upsample the result, following
    * surfaces, and keep their own full-resolution hard shadow where the
@@ -252,7 +279,8 @@ protected:
   enum class Stage
   {
     Idle,
-    LightDepth,    ///< drawing depth from a light or the camera: no shading
+    LightDepth,    ///< drawing depth from a light (or before receivers): no shading
+    CameraDepth,   ///< drawing the camera depth for screen-space passes
     LightDistance, ///< drawing squared distances to a point light: cube faces
     Receivers      ///< final drawing with the shadow term
   };
@@ -280,6 +308,7 @@ private:
   friend class vtkShadowScreenBuffers;
 
   Stage CurrentStage = Stage::Idle;
+  int CameraPassTargets = 0;  ///< CameraDepth: colour targets the fragments write
   float FaceClipToView[16];   ///< LightDistance: the face's inverse projection
   float FaceSize = 1.0f;      ///< LightDistance: the face's width in texels
   float FaceRange = 0.0f;     ///< LightDistance: 0, or the packing range (far^2)

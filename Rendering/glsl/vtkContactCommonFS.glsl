@@ -1,12 +1,14 @@
 // Shared by the contact-hardening passes (after vtkShadowScreenCommonFS).
-// A contact map texel holds r = S (1 shadowed, 0 lit), g = D (the kernel
-// control; <= 0: not blurred), b = the surface's distance to the camera (0 on
-// background) and a = 1 once a blur will touch or has touched the pixel.
-// The camera distance is in units of contactDistanceUnit (the far clipping
-// distance), so that half floats hold it in scenes of any scale.
+// Two texel layouts, both with b = the surface's camera distance (0 on
+// background):
+//  - distance map (pass 2): r = S (1 shadowed, 0 lit), g = D;
+//  - filtering (from the prepare pass on): the framework's visibility layout
+//    (vtkShadowScreenBuffers::GetVisibility()), so that the last blur can
+//    write the receivers' texture: r = visibility 1 - S, g = 1 where a blur
+//    will touch or has touched the pixel (elsewhere receivers keep their own
+//    full-resolution hard shadow), a = D (<= 0: not blurred).
 uniform sampler2D contactMap;
 uniform float contactDepthTolerance;
-uniform float contactDistanceUnit;
 uniform bool contactDebugView;
 
 vec4 vtkContactFetch(ivec2 pixel)
@@ -22,23 +24,15 @@ bool vtkContactSameSurface(vec4 center, vec4 tap)
   return tap.b > 0.0 && abs(tap.b - center.b) <= contactDepthTolerance * center.b;
 }
 
-// Pass 5's input: visibility 1 - S, or the debug view of the paper's
-// figure 4 (lit 1, umbra 0.5, penumbra a dark 0.1).
-float vtkContactVisibility(float s)
+// Pass 5: a filtering texel `c` with its filtered visibility `v`, or the
+// debug view of the paper's figure 4 (lit 1, umbra 0.5, penumbra a dark 0.1)
+// on every surface.
+vec4 vtkContactOutput(vec4 c, float v)
 {
   if (contactDebugView)
   {
-    return s <= 0.001 ? 1.0 : (s >= 0.999 ? 0.5 : 0.1);
+    float marked = v >= 0.999 ? 1.0 : (v <= 0.001 ? 0.5 : 0.1);
+    return vec4(marked, c.b > 0.0 ? 1.0 : 0.0, c.b, 0.0);
   }
-  return 1.0 - s;
-}
-
-// Pass 5's texel for the receivers (vtkShadowScreenBuffers::BeginVisibility):
-// the visibility, valid where a blur reached (elsewhere receivers keep their
-// own full-resolution hard shadow; the debug view marks every surface), and
-// the surface's camera distance.
-vec4 vtkContactOutput(vec4 c, float s)
-{
-  bool valid = contactDebugView ? c.b > 0.0 : c.a > 0.5;
-  return vec4(vtkContactVisibility(s), valid ? 1.0 : 0.0, c.b * contactDistanceUnit, 0.0);
+  return vec4(v, c.g, c.b, 0.0);
 }

@@ -1,4 +1,5 @@
-// Pass 4, single Gaussian variant: a separable Gaussian blur of S over D
+// Pass 4, single Gaussian variant: a separable Gaussian blur of the
+// visibility over D
 // pixels (clamped to the maximum; sigma = size / 3), run once along x, then
 // along y writing pass 5's visibility. The texel just beyond D / 2 counts in
 // part, so the result changes smoothly with D.
@@ -10,10 +11,10 @@ void main()
 {
   ivec2 pixel = vtkScreenPixel();
   vec4 c = vtkContactFetch(pixel);
-  float s = c.r;
-  if (c.g > 0.0)
+  float v = c.r;
+  if (c.a > 0.0)
   {
-    float size = min(c.g, float(maximumKernel));
+    float size = min(c.a, float(maximumKernel));
     float reach = size * 0.5;
     int radius = int(reach) + 1;
     float sigma = max(size / 3.0, 0.5);
@@ -30,7 +31,7 @@ void main()
         weights += w;
       }
     }
-    s = sum / weights;
+    v = sum / weights;
   }
-  gl_FragData[0] = lastPass ? vtkContactOutput(c, s) : vec4(s, c.gba);
+  gl_FragData[0] = lastPass ? vtkContactOutput(c, v) : vec4(v, c.gba);
 }

@@ -1,9 +1,9 @@
-// Pass 4, multi-pass variant: one Poisson-disk Gaussian blur of S over a
-// kernel of `kernelSize` pixels (sigma = size / 3, weights normalised), for
-// pixels whose D is still positive; D drops by one. Only pixels the prepare
-// pass selected for this pass are drawn (depth mask): those still blurring,
-// and those whose D ran out in the pass before, copied so that both ping-pong
-// buffers agree on them from then on.
+// Pass 4, multi-pass variant: one Poisson-disk Gaussian blur of the
+// visibility over a kernel of `kernelSize` pixels (sigma = size / 3, weights
+// normalised), for pixels whose D is still positive; D drops by one. Only
+// pixels the prepare pass selected for this pass are drawn (depth mask):
+// those still blurring, and those whose D ran out in the pass before, copied
+// so that both ping-pong buffers agree on them from then on.
 uniform vec3 taps[64];
 uniform int tapCount;
 uniform float kernelSize;
@@ -12,7 +12,7 @@ void main()
 {
   ivec2 pixel = vtkScreenPixel();
   vec4 c = vtkContactFetch(pixel);
-  if (c.g <= 0.0)
+  if (c.a <= 0.0)
   {
     gl_FragData[0] = c;
     return;
@@ -28,5 +28,5 @@ void main()
       weights += taps[i].z;
     }
   }
-  gl_FragData[0] = vec4(sum / weights, max(c.g - 1.0, 0.0), c.b, c.a);
+  gl_FragData[0] = vec4(sum / weights, c.g, c.b, max(c.a - 1.0, 0.0));
 }

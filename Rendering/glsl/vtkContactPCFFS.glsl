@@ -1,4 +1,4 @@
-// Pass 4, PCF variant: the mean of S over a square kernel of D pixels
+// Pass 4, PCF variant: the mean visibility over a square kernel of D pixels
 // (clamped to the maximum), then pass 5's visibility. Texels count by how
 // much of them the kernel covers, so the result changes smoothly with D
 // (a kernel of whole texels makes steps where D crosses an odd number).
@@ -8,10 +8,10 @@ void main()
 {
   ivec2 pixel = vtkScreenPixel();
   vec4 c = vtkContactFetch(pixel);
-  float s = c.r;
-  if (c.g > 0.0)
+  float v = c.r;
+  if (c.a > 0.0)
   {
-    float reach = min(c.g, float(maximumKernel)) * 0.5;
+    float reach = min(c.a, float(maximumKernel)) * 0.5;
     int radius = int(ceil(reach - 0.5));
     float sum = 0.0;
     float count = 0.0;
@@ -29,7 +29,7 @@ void main()
         }
       }
     }
-    s = sum / count;
+    v = sum / count;
   }
-  gl_FragData[0] = vtkContactOutput(c, s);
+  gl_FragData[0] = vtkContactOutput(c, v);
 }
