@@ -84,3 +84,22 @@ large, _ = st.shadow_only(scaled(scene, 1.0e5))
 difference = st.rmse(large, unit, mask)
 print("scene scaled by 1e5: RMSE to the unit scene %.4f" % difference)
 st.check(difference < 0.005, "a scene 1e5 times larger looks the same (RMSE %.4f)" % difference)
+
+
+# Lights beyond the eighth: one camera pass writes the distance maps of up to
+# eight lights (colour targets); the ninth and tenth go through a second one,
+# and must shade as the same light does alone.
+many = copy.deepcopy(scene)
+extra = []
+for i in range(9):
+    angle = 2.0 * np.pi * i / 9.0
+    extra.append({"type": "spot", "position": [3.0 * np.cos(angle), 4.0, 3.0 * np.sin(angle)],
+                  "focal_point": [0, 0, 0], "cone_angle": 45, "intensity": 0.1,
+                  "radius": radius})
+many["lights"] = extra + scene["lights"]
+alone, mask = st.shadow_only(scene)
+tenth, _ = st.shadow_only(many, light=len(many["lights"]) - 1)
+difference = st.rmse(tenth, alone, mask)
+print("tenth light of ten against the same light alone: RMSE %.4f" % difference)
+st.check(difference < 0.005,
+         "a light in the second camera pass shades as alone (RMSE %.4f)" % difference)
