@@ -32,6 +32,7 @@ set(softshadows_rendering_shaders
   vtkShadowCubeLayersGS
   vtkShadowCubeLookupFS
   vtkShadowNormalOffsetFS
+  vtkShadowPackFS
   vtkShadowScreenCommonFS
   vtkSoftShadowReceiverFS)
 

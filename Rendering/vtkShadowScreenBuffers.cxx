@@ -16,9 +16,11 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
+#include "vtkShadowPackFS.h"
 #include "vtkShadowScreenCommonFS.h"
 
 #include <algorithm> // for std::max
+#include <cmath>     // for std::log2
 #include <string>
 
 vtkShadowScreenBuffers::vtkShadowScreenBuffers() = default;
@@ -62,6 +64,13 @@ bool vtkShadowScreenBuffers::Update(const vtkRenderState* s)
   // Clip to world for this frame's camera and aspect ratio.
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->GetPosition(this->CameraPosition);
+  // Packed camera distances: a log scale over the clipping range, with a
+  // factor of two to spare either way.
+  const double* range = camera->GetClippingRange();
+  const double logNear = std::log2(std::max(range[0], 1e-30) * 0.5);
+  const double logFar = std::log2(std::max(range[1], range[0] * 1.001) * 2.0);
+  this->LogNear = static_cast<float>(logNear);
+  this->CodesPerLog = static_cast<float>(2046.0 / (logFar - logNear));
   vtkNew<vtkMatrix4x4> clipToWorld;
   vtkMatrix4x4::Multiply4x4(
     camera->GetProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1, 1),
@@ -185,9 +194,68 @@ void vtkShadowScreenBuffers::EndVisibility()
 }
 
 //------------------------------------------------------------------------------
+bool vtkShadowScreenBuffers::Pack(int numberOfLights)
+{
+  if (!this->PackQuad)
+  {
+    this->PackQuad = this->CreateQuad(this->Context, vtkShadowPackFS);
+  }
+  if (!this->PackQuad->Program || numberOfLights > static_cast<int>(this->Visibility.size()))
+  {
+    return false;
+  }
+  if (!this->Framebuffer)
+  {
+    this->Framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    this->Framebuffer->SetContext(this->Context);
+  }
+  vtkOpenGLState* state = this->Context->GetState();
+  vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
+  state->vtkglDisable(GL_BLEND);
+  state->PushFramebufferBindings();
+  this->Framebuffer->Bind();
+  state->vtkglViewport(0, 0, this->Width, this->Height);
+  state->vtkglScissor(0, 0, this->Width, this->Height);
+  this->Packed.resize(numberOfLights);
+  for (int slot = 0; slot < numberOfLights; ++slot)
+  {
+    auto& packed = this->Packed[slot];
+    if (!packed)
+    {
+      packed = vtkSmartPointer<vtkTextureObject>::New();
+      packed->SetContext(this->Context);
+      packed->SetMinificationFilter(vtkTextureObject::Nearest);
+      packed->SetMagnificationFilter(vtkTextureObject::Nearest);
+      packed->SetWrapS(vtkTextureObject::ClampToEdge);
+      packed->SetWrapT(vtkTextureObject::ClampToEdge);
+      packed->SetInternalFormat(GL_RGBA32F);
+      packed->SetFormat(GL_RGBA);
+      packed->SetDataType(GL_FLOAT);
+      packed->Allocate2D(this->Width, this->Height, 4, VTK_FLOAT);
+    }
+    packed->Resize(this->Width, this->Height);
+    this->Framebuffer->AddColorAttachment(0, packed);
+    this->Framebuffer->ActivateDrawBuffers(1);
+    vtkTextureObject* visibility = this->Visibility[slot];
+    visibility->Activate();
+    this->DrawQuad(this->PackQuad.get(),
+      [&](vtkShaderProgram* program)
+      {
+        program->SetUniformi("vtkShadowVisibility", visibility->GetTextureUnit());
+        program->SetUniformf("vtkShadowLogNear", this->LogNear);
+        program->SetUniformf("vtkShadowCodesPerLog", this->CodesPerLog);
+      });
+    visibility->Deactivate();
+  }
+  this->Framebuffer->RemoveColorAttachment(0);
+  state->PopFramebufferBindings();
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void vtkShadowScreenBuffers::ActivateTextures()
 {
-  for (auto& texture : this->Visibility)
+  for (auto& texture : this->Packed)
   {
     texture->Activate();
   }
@@ -196,7 +264,7 @@ void vtkShadowScreenBuffers::ActivateTextures()
 //------------------------------------------------------------------------------
 void vtkShadowScreenBuffers::DeactivateTextures()
 {
-  for (auto& texture : this->Visibility)
+  for (auto& texture : this->Packed)
   {
     texture->Deactivate();
   }
@@ -211,10 +279,12 @@ void vtkShadowScreenBuffers::SetUniforms(vtkShaderProgram* program, int numberOf
   float scale[2] = { static_cast<float>(this->Width) / std::max(this->ViewportSize[0], 1),
     static_cast<float>(this->Height) / std::max(this->ViewportSize[1], 1) };
   program->SetUniform2f("vtkShadowScreenScale", scale);
-  for (int i = 0; i < numberOfLights && i < static_cast<int>(this->Visibility.size()); ++i)
+  program->SetUniformf("vtkShadowLogNear", this->LogNear);
+  program->SetUniformf("vtkShadowCodesPerLog", this->CodesPerLog);
+  for (int i = 0; i < numberOfLights && i < static_cast<int>(this->Packed.size()); ++i)
   {
     const std::string name = "vtkShadowScreen[" + std::to_string(i) + "]";
-    program->SetUniformi(name.c_str(), this->Visibility[i]->GetTextureUnit());
+    program->SetUniformi(name.c_str(), this->Packed[i]->GetTextureUnit());
   }
 }
 
@@ -229,6 +299,12 @@ void vtkShadowScreenBuffers::ReleaseGraphicsResources(vtkWindow* w)
   {
     texture->ReleaseGraphicsResources(w);
   }
+  for (auto& texture : this->Packed)
+  {
+    texture->ReleaseGraphicsResources(w);
+  }
+  this->Packed.clear();
+  this->PackQuad.reset();
   if (this->Framebuffer)
   {
     this->Framebuffer->ReleaseGraphicsResources(w);

@@ -105,8 +105,15 @@ public:
    */
   vtkTextureObject* GetVisibility(int slot);
 
+  /**
+   * After the technique's passes: pack each light's visibility texture for
+   * the receivers (vtkShadowPackFS.glsl), so that their bilinear lookup of
+   * four texels is one fetch.
+   */
+  bool Pack(int numberOfLights);
+
   ///@{
-  /** Receivers: bind the textures and upload their uniforms. */
+  /** Receivers: bind the packed textures and upload their uniforms. */
   void ActivateTextures();
   void DeactivateTextures();
   void SetUniforms(vtkShaderProgram* program, int numberOfLights) const;
@@ -125,6 +132,10 @@ private:
   float ClipToWorld[16];
   vtkSmartPointer<vtkTextureObject> CameraDepth;
   std::vector<vtkSmartPointer<vtkTextureObject>> Visibility;
+  std::vector<vtkSmartPointer<vtkTextureObject>> Packed;
+  std::unique_ptr<vtkOpenGLQuadHelper> PackQuad;
+  float LogNear = 0.0f;     // packed camera distances: log2 of the smallest
+  float CodesPerLog = 1.0f; // and codes per unit of log2
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
 };
 

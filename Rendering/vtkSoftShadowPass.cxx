@@ -198,7 +198,8 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   if (drawn && this->UsesScreenSpace())
   {
     this->Screen->SetResolutionDivisor(this->GetScreenResolutionDivisor());
-    drawn = this->Screen->Update(s) && this->RenderScreenSpace(s);
+    drawn = this->Screen->Update(s) && this->RenderScreenSpace(s) &&
+      this->Screen->Pack(static_cast<int>(shadowed.size()));
   }
   if (!drawn)
   {

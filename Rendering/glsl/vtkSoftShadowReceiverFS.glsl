@@ -74,40 +74,40 @@ uniform float vtkShadowDistanceBias; // multiplicative, on squared distances
 uniform sampler2D vtkShadowScreen[VTK_SHADOW_LIGHTS];
 uniform vec2 vtkShadowViewportOrigin;
 uniform vec2 vtkShadowScreenScale; // viewport pixels to screen-space texels
+uniform float vtkShadowLogNear;    // see vtkShadowPackFS.glsl
+uniform float vtkShadowCodesPerLog;
 
 // A screen-space visibility texture (vtkShadowScreenBuffers::BeginVisibility:
-// r visibility, g 1 where valid, b the surface's camera distance), possibly
-// smaller than the viewport: bilinear over the four nearest texels that lie
-// on this fragment's surface (at `positionWC`; camera distances within 2%),
-// each giving its visibility where valid and the fragment's own
-// full-resolution `hard` one where not. Fragments no texel belongs to
-// (silhouettes the buffer missed, translucent surfaces not within 2% of an
-// opaque one, surfaces seen within a few degrees of edge-on) keep `hard`.
-// A tolerance that grows with the distance's slope would keep the
+// visibility, whether it is valid, and the surface's camera distance),
+// possibly smaller than the viewport, read packed (vtkShadowPackFS.glsl: the
+// four texels around the fragment in one fetch): bilinear over the four
+// texels that lie on this fragment's surface (at `positionWC`; camera
+// distances within 2%), each giving its visibility where valid and the
+// fragment's own full-resolution `hard` one where not. Fragments no texel
+// belongs to (silhouettes the buffer missed, translucent surfaces not within
+// 2% of an opaque one, surfaces seen within a few degrees of edge-on) keep
+// `hard`. A tolerance that grows with the distance's slope would keep the
 // screen-space result on grazing surfaces, but there the isotropic
 // screen-space kernels do no better than the hard shadow (README, Quality).
 float vtkShadowScreenVisibility(sampler2D screen, vec4 positionWC, float hard)
 {
-  vec2 p = (gl_FragCoord.xy - vtkShadowViewportOrigin) * vtkShadowScreenScale - 0.5;
+  // Clamped to the texel centres at the edges, as bilinear filtering clamps.
+  vec2 last = vec2(textureSize(screen, 0) - 1);
+  vec2 p = clamp((gl_FragCoord.xy - vtkShadowViewportOrigin) * vtkShadowScreenScale - 0.5,
+    vec2(0.0), last);
   vec2 f = fract(p);
-  ivec2 base = ivec2(floor(p));
-  ivec2 last = textureSize(screen, 0) - 1;
+  vec4 codes = texelFetch(screen, ivec2(p), 0); // lower left, right, above, above right
+  vec4 visibility = floor(codes / 2048.0);
+  vec4 distances = codes - 2048.0 * visibility;
   // The camera sits at the view-space origin.
-  float fragmentDistance = distance(positionWC.xyz, vtkShadowViewToWorld[3].xyz);
-  float sum = 0.0;
-  float weights = 0.0;
-  for (int k = 0; k < 4; ++k)
-  {
-    ivec2 offset = ivec2(k & 1, k >> 1);
-    vec4 t = texelFetch(screen, clamp(base + offset, ivec2(0), last), 0);
-    vec2 axis = mix(1.0 - f, f, vec2(offset));
-    float w = axis.x * axis.y + 1.0e-4;
-    if (abs(t.b - fragmentDistance) <= 0.02 * fragmentDistance)
-    {
-      sum += w * (t.g > 0.5 ? t.r : hard);
-      weights += w;
-    }
-  }
-  return weights > 0.0 ? sum / weights : hard;
+  float fragment = (log2(distance(positionWC.xyz, vtkShadowViewToWorld[3].xyz)) -
+                     vtkShadowLogNear) * vtkShadowCodesPerLog + 1.0;
+  float tolerance = 0.0286 * vtkShadowCodesPerLog + 0.5; // log2(1.02), and rounding
+  vec4 weights = (vec4(1.0 - f.x, f.x, 1.0 - f.x, f.x) * vec4(1.0 - f.y, 1.0 - f.y, f.y, f.y) +
+                   1.0e-4) * vec4(lessThanEqual(abs(distances - fragment), vec4(tolerance))) *
+    vec4(greaterThan(distances, vec4(0.0)));
+  vec4 values = mix(visibility / 4094.0, vec4(hard), vec4(equal(visibility, vec4(4095.0))));
+  float total = dot(weights, vec4(1.0));
+  return total > 0.0 ? dot(weights, values) / total : hard;
 }
 #endif
