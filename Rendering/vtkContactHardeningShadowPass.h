@@ -155,7 +155,7 @@ public:
    * Umbra early-out: D = 0 where every pixel of the EarlyOutKernelSize-wide
    * square around (which should exceed MaximumKernelSize) is shadowed, so
    * blurs skip the inside of the umbra; decided per 8x8-pixel tile, so the
-   * square may reach up to 7 pixels further. Defaults on, 25.
+   * square may reach up to 11 pixels further. Defaults on, 25.
    */
   vtkSetMacro(UmbraEarlyOut, bool);
   vtkGetMacro(UmbraEarlyOut, bool);
