@@ -84,6 +84,7 @@ public:
   size_t CameraPassFirst = 0;         // the first light the camera pass draws
   std::vector<int> CameraPassUnits;   // texture units of its lights' maps
   std::vector<float> PassMidpoints;   // see passMidpoints in vtkContactDistanceFS.glsl
+  std::vector<float> FrameTaps;       // this frame's Taps(PoissonTaps)
   bool Unsupported = false;
   // Section 3.1: up to 64 Poisson-disk points in [-1,1]^2, the first at the
   // origin.
@@ -297,7 +298,7 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
   // Blur variances add: where the variance of k + 1 passes becomes closer to
   // a penumbra's than that of k passes.
   float kernelVariance = 0.0f;
-  in.Taps(this->PoissonTaps, kernelVariance);
+  in.FrameTaps = in.Taps(this->PoissonTaps, kernelVariance);
   in.PassMidpoints.clear();
   float variance = 0.0f;
   for (int pass = 0; pass < this->PassLimit; ++pass)
@@ -453,8 +454,7 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
   const int h = this->Screen->GetHeight();
   const int tilesW = static_cast<int>(in.TileMaps[0]->GetWidth());
   const int tilesH = static_cast<int>(in.TileMaps[0]->GetHeight());
-  float kernelVariance = 0.0f;
-  const std::vector<float> taps = in.Taps(this->PoissonTaps, kernelVariance);
+  const std::vector<float>& taps = in.FrameTaps;
   const float tolerance = 0.1f;
 
   vtkOpenGLState* state = context->GetState();
