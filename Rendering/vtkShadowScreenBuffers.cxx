@@ -196,6 +196,16 @@ void vtkShadowScreenBuffers::EndVisibility()
 //------------------------------------------------------------------------------
 bool vtkShadowScreenBuffers::Pack(int numberOfLights)
 {
+  if (!(GLEW_VERSION_4_0 || GLEW_ARB_texture_gather))
+  {
+    if (!this->GatherReported)
+    {
+      vtkGenericWarningMacro("Screen-space shadows need OpenGL 4.0 or ARB_texture_gather for "
+                             "the receivers' lookup; drawing without shadows.");
+      this->GatherReported = true;
+    }
+    return false;
+  }
   if (!this->PackQuad)
   {
     this->PackQuad = this->CreateQuad(this->Context, vtkShadowPackFS);
@@ -228,10 +238,10 @@ bool vtkShadowScreenBuffers::Pack(int numberOfLights)
       packed->SetMagnificationFilter(vtkTextureObject::Nearest);
       packed->SetWrapS(vtkTextureObject::ClampToEdge);
       packed->SetWrapT(vtkTextureObject::ClampToEdge);
-      packed->SetInternalFormat(GL_RGBA32F);
-      packed->SetFormat(GL_RGBA);
+      packed->SetInternalFormat(GL_R32F);
+      packed->SetFormat(GL_RED);
       packed->SetDataType(GL_FLOAT);
-      packed->Allocate2D(this->Width, this->Height, 4, VTK_FLOAT);
+      packed->Allocate2D(this->Width, this->Height, 1, VTK_FLOAT);
     }
     packed->Resize(this->Width, this->Height);
     this->Framebuffer->AddColorAttachment(0, packed);

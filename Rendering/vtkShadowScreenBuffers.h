@@ -106,9 +106,10 @@ public:
   vtkTextureObject* GetVisibility(int slot);
 
   /**
-   * After the technique's passes: pack each light's visibility texture for
-   * the receivers (vtkShadowPackFS.glsl), so that their bilinear lookup of
-   * four texels is one fetch.
+   * After the technique's passes: code each light's visibility texture for
+   * the receivers (vtkShadowPackFS.glsl: one float a texel), so that their
+   * bilinear lookup gathers four texels in one fetch. Needs OpenGL 4.0 or
+   * ARB_texture_gather; without, reports it once and returns false.
    */
   bool Pack(int numberOfLights);
 
@@ -136,6 +137,7 @@ private:
   std::unique_ptr<vtkOpenGLQuadHelper> PackQuad;
   float LogNear = 0.0f;     // packed camera distances: log2 of the smallest
   float CodesPerLog = 1.0f; // and codes per unit of log2
+  bool GatherReported = false;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
 };
 

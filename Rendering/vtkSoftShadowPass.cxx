@@ -405,6 +405,12 @@ bool vtkSoftShadowPass::PreReplaceShaderValues(std::string&, std::string& geomet
         "//VTK::SoftShadow::Impl\n  return;\n  //VTK::Light::Impl", false);
       break;
     case Stage::Receivers:
+      if (this->UsesScreenSpace())
+      {
+        // textureGather (vtkShadowScreenVisibility) in the mappers' GLSL 1.50.
+        vtkShaderProgram::Substitute(fragmentShader, "//VTK::System::Dec",
+          "//VTK::System::Dec\n#extension GL_ARB_texture_gather : enable", false);
+      }
       vtkShaderProgram::Substitute(
         fragmentShader, "//VTK::Light::Dec", "//VTK::SoftShadow::Dec\n//VTK::Light::Dec", false);
       vtkShaderProgram::Substitute(

@@ -79,24 +79,28 @@ uniform float vtkShadowCodesPerLog;
 
 // A screen-space visibility texture (vtkShadowScreenBuffers::BeginVisibility:
 // visibility, whether it is valid, and the surface's camera distance),
-// possibly smaller than the viewport, read packed (vtkShadowPackFS.glsl: the
-// four texels around the fragment in one fetch): bilinear over the four
-// texels that lie on this fragment's surface (at `positionWC`; camera
-// distances within 2%), each giving its visibility where valid and the
-// fragment's own full-resolution `hard` one where not. Fragments no texel
-// belongs to (silhouettes the buffer missed, translucent surfaces not within
-// 2% of an opaque one, surfaces seen within a few degrees of edge-on) keep
-// `hard`. A tolerance that grows with the distance's slope would keep the
-// screen-space result on grazing surfaces, but there the isotropic
-// screen-space kernels do no better than the hard shadow (README, Quality).
+// possibly smaller than the viewport, read coded (vtkShadowPackFS.glsl: one
+// float a texel, the four around the fragment gathered in one fetch):
+// bilinear over the four texels that lie on this fragment's surface (at
+// `positionWC`; camera distances within 2%), each giving its visibility where
+// valid and the fragment's own full-resolution `hard` one where not.
+// Fragments no texel belongs to (silhouettes the buffer missed, translucent
+// surfaces not within 2% of an opaque one, surfaces seen within a few degrees
+// of edge-on) keep `hard`. A tolerance that grows with the distance's slope
+// would keep the screen-space result on grazing surfaces, but there the
+// isotropic screen-space kernels do no better than the hard shadow (README,
+// Quality).
 float vtkShadowScreenVisibility(sampler2D screen, vec4 positionWC, float hard)
 {
   // Clamped to the texel centres at the edges, as bilinear filtering clamps.
-  vec2 last = vec2(textureSize(screen, 0) - 1);
+  vec2 size = vec2(textureSize(screen, 0));
   vec2 p = clamp((gl_FragCoord.xy - vtkShadowViewportOrigin) * vtkShadowScreenScale - 0.5,
-    vec2(0.0), last);
+    vec2(0.0), size - 1.0);
   vec2 f = fract(p);
-  vec4 codes = texelFetch(screen, ivec2(p), 0); // lower left, right, above, above right
+  // Gathered at the four texels' shared corner as upper left, upper right,
+  // lower right, lower left; reordered to lower left, lower right, upper
+  // left, upper right.
+  vec4 codes = textureGather(screen, (floor(p) + 1.0) / size).wzxy;
   vec4 visibility = floor(codes / 2048.0);
   vec4 distances = codes - 2048.0 * visibility;
   // The camera sits at the view-space origin.
