@@ -44,6 +44,19 @@ constexpr int MaximumTaps = 64;
 // Pixels (of the distance map) on a side of a classification tile.
 constexpr int TileSize = 8;
 
+// Taps (x, y in [-1,1], weight) with x and y scaled to a kernel `size`
+// pixels wide and rounded to whole pixels, as the shaders fetch them.
+std::vector<float> ScaledTaps(const std::vector<float>& taps, int size)
+{
+  std::vector<float> scaled(taps);
+  for (size_t i = 0; i + 2 < scaled.size(); i += 3)
+  {
+    scaled[i] = std::round(scaled[i] * 0.5f * static_cast<float>(size));
+    scaled[i + 1] = std::round(scaled[i + 1] * 0.5f * static_cast<float>(size));
+  }
+  return scaled;
+}
+
 vtkSmartPointer<vtkTextureObject> FloatTexture(vtkOpenGLRenderWindow* context, int w, int h)
 {
   auto texture = vtkSmartPointer<vtkTextureObject>::New();
@@ -310,17 +323,27 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
   }
 
   // Pass 2 for up to LightsPerCameraPass lights at a time, drawn with the
-  // camera depth; then each light's filtering.
+  // camera depth; then each light's filtering. A distance map is the second
+  // buffer of its light's ping-pong pair: for a multi-pass blur chain that
+  // ends on it (odd pass limit), it is the receivers' texture itself.
+  const bool chainEndsOnMap =
+    this->Variant == MultiPass && !this->DebugView && this->PassLimit % 2 == 1;
   for (size_t first = 0; first < lights.size(); first += in.DistanceMaps.size())
   {
     const size_t count = std::min(in.DistanceMaps.size(), lights.size() - first);
-    if (!this->RenderDistanceMaps(s, first, count))
+    std::vector<vtkTextureObject*> targets;
+    for (size_t k = 0; k < count; ++k)
+    {
+      targets.push_back(chainEndsOnMap ? this->Screen->GetVisibility(static_cast<int>(first + k))
+                                       : in.DistanceMaps[k].Get());
+    }
+    if (!this->RenderDistanceMaps(s, first, targets))
     {
       return false;
     }
     for (size_t k = 0; k < count; ++k)
     {
-      this->FilterDistanceMap(context, static_cast<int>(first + k), in.DistanceMaps[k]);
+      this->FilterDistanceMap(context, static_cast<int>(first + k), targets[k]);
     }
   }
   return true;
@@ -328,9 +351,10 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
 
 //------------------------------------------------------------------------------
 bool vtkContactHardeningShadowPass::RenderDistanceMaps(
-  const vtkRenderState* s, size_t first, size_t count)
+  const vtkRenderState* s, size_t first, const std::vector<vtkTextureObject*>& targets)
 {
   vtkInternals& in = *this->Internals;
+  const size_t count = targets.size();
   const auto& lights = this->Maps->GetLights();
   in.CameraPassFirst = first;
   in.CameraPassUnits.clear();
@@ -347,8 +371,7 @@ bool vtkContactHardeningShadowPass::RenderDistanceMaps(
       glBindSampler(map->GetTextureUnit(), in.RawDepthSampler);
     }
   }
-  const bool ok = this->RenderCameraDepth(
-    s, std::vector<vtkTextureObject*>(in.DistanceMaps.begin(), in.DistanceMaps.begin() + count));
+  const bool ok = this->RenderCameraDepth(s, targets);
   for (size_t k = 0; k < count; ++k)
   {
     const auto& light = lights[first + k];
@@ -388,6 +411,7 @@ std::string vtkContactHardeningShadowPass::GetCameraPassImplementation()
   const vtkInternals& in = *this->Internals;
   const auto& lights = this->Maps->GetLights();
   std::ostringstream impl;
+  impl << "  vtkContactCameraSetup(vtkShadowPositionWC, vtkShadowNormalWC);\n";
   int maps = 0, cubes = 0;
   for (size_t k = 0; k < in.CameraPassUnits.size(); ++k)
   {
@@ -489,16 +513,15 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
     tolerance, this->DebugView);
   in.Untarget();
 
-  // The ping-pong pair. The multi-pass variant's last blur target is the
-  // receivers' visibility texture (the filtering layout is theirs), so no
-  // pass copies it there.
+  // The ping-pong pair: the prepare pass's target and the distance map,
+  // which holds the final value of every pixel no blur touches. The
+  // multi-pass variant's last blur target is the receivers' visibility
+  // texture (the layout is theirs), so no pass copies it there.
   vtkTextureObject* visibility = this->Screen->GetVisibility(slot);
   const bool blursIntoVisibility = this->Variant == MultiPass && !this->DebugView;
-  std::array<vtkTextureObject*, 2> pair = { in.Maps[0], in.Maps[1] };
-  if (blursIntoVisibility)
-  {
-    pair[this->PassLimit % 2] = visibility;
-  }
+  const std::array<vtkTextureObject*, 2> pair = {
+    blursIntoVisibility && this->PassLimit % 2 == 0 ? visibility : in.Maps[0].Get(), distance
+  };
 
   auto toVisibility = [&](std::unique_ptr<vtkOpenGLQuadHelper>& quad, vtkTextureObject* input,
                         const std::function<void(vtkShaderProgram*)>& uniforms)
@@ -508,8 +531,8 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
     in.Untarget();
   };
 
-  // Umbra early-out and pass 3, into both.
-  in.Target(context, w, h, pair[0], pair[1], true);
+  // Umbra early-out and pass 3.
+  in.Target(context, w, h, pair[0], nullptr, true);
   in.TileMaps[1]->Activate();
   in.Draw(
     this->Screen.get(), in.Prepare, distance,
@@ -519,8 +542,8 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
       program->SetUniformi("contactTileSize", TileSize);
       program->SetUniformi("earlyOut", this->UmbraEarlyOut ? 1 : 0);
       program->SetUniformi("dilation", this->Dilation ? 1 : 0);
-      program->SetUniformf("dilationSize", static_cast<float>(this->DilationSize));
-      program->SetUniform3fv("taps", this->PoissonTaps, taps.data());
+      const std::vector<float> dilationTaps = ScaledTaps(taps, this->DilationSize);
+      program->SetUniform3fv("taps", this->PoissonTaps, dilationTaps.data());
       program->SetUniformi("tapCount", this->PoissonTaps);
     },
     tolerance, this->DebugView, vtkShadowScreenBuffers::QuadMask::Write);
@@ -553,9 +576,9 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
         this->Screen.get(), in.MultiPass, pair[pass % 2],
         [&](vtkShaderProgram* program)
         {
-          program->SetUniform3fv("taps", this->PoissonTaps, taps.data());
+          const std::vector<float> passTaps = ScaledTaps(taps, size);
+          program->SetUniform3fv("taps", this->PoissonTaps, passTaps.data());
           program->SetUniformi("tapCount", this->PoissonTaps);
-          program->SetUniformf("kernelSize", static_cast<float>(size));
         },
         tolerance, this->DebugView, vtkShadowScreenBuffers::QuadMask::Test,
         1.0f - static_cast<float>(pass) / 256.0f);

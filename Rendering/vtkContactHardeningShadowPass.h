@@ -55,6 +55,7 @@
 #include "vtkSoftShadowPass.h"
 
 #include <memory> // for std::unique_ptr
+#include <vector> // for std::vector
 
 class VTKSOFTSHADOWSRENDERING_EXPORT vtkContactHardeningShadowPass : public vtkSoftShadowPass
 {
@@ -224,8 +225,10 @@ private:
 
   /// The multi-pass variant's kernel size in pass `pass` (from 0).
   int KernelSize(int pass) const;
-  /// Pass 2 for lights [first, first + count), drawn with the camera depth.
-  bool RenderDistanceMaps(const vtkRenderState* s, size_t first, size_t count);
+  /// Pass 2 for lights first, first + 1... into `targets`, drawn with the
+  /// camera depth.
+  bool RenderDistanceMaps(
+    const vtkRenderState* s, size_t first, const std::vector<vtkTextureObject*>& targets);
   /// Early-out, dilation, filtering and the visibility of light `slot`.
   void FilterDistanceMap(vtkOpenGLRenderWindow* context, int slot, vtkTextureObject* distance);
 

@@ -344,8 +344,7 @@ std::string vtkSoftShadowPass::GetVisibilityExpression(int slot)
       "vtkShadowPCFRadius)";
   if (this->UsesScreenSpace())
   {
-    return "vtkShadowScreenVisibility(vtkShadowScreen[" + i + "], vtkShadowPositionWC, " + hard +
-      ")";
+    return "vtkShadowScreenVisibility(vtkShadowScreen[" + i + "], " + hard + ")";
   }
   return hard;
 }
@@ -474,6 +473,10 @@ bool vtkSoftShadowPass::PostReplaceShaderValues(
         << this->GetVisibilityDeclarations() << "\n";
 
     impl << SurfaceCode;
+    if (this->UsesScreenSpace())
+    {
+      impl << "  vtkShadowScreenSetup(vtkShadowPositionWC);\n";
+    }
     for (size_t slot = 0; slot < lights.size(); ++slot)
     {
       const int n = lights[slot].ShaderIndex;

@@ -9,7 +9,7 @@
 # instructions of one frame of `hard` and of TECHNIQUE, and their ratio:
 # `softshadows bench` over 2 and over 6 frames (each frame draws `hard` and
 # TECHNIQUE), the difference divided by 4, so start-up and shader compilation
-# cancel. Each count follows a counted warm-up run: Mesa's shader cache is
+# cancel. Each count follows a counted warm-up run of 2 frames: Mesa's shader cache is
 # keyed by the CPU, and the one valgrind presents differs from the
 # machine's. A few minutes a technique.
 set -euo pipefail
@@ -37,7 +37,7 @@ count() {
 
 # Instructions of one frame of `hard` plus one of $1 (just `hard` for hard).
 per_frame() {
-  count "$1" 1 >/dev/null
+  count "$1" 2 >/dev/null
   local two six
   two=$(count "$1" 2)
   six=$(count "$1" 6)

@@ -1,12 +1,10 @@
 // Shared by the contact-hardening passes (after vtkShadowScreenCommonFS).
-// Two texel layouts, both with b = the surface's camera distance (0 on
-// background):
-//  - distance map (pass 2): r = S (1 shadowed, 0 lit), g = D;
-//  - filtering (from the prepare pass on): the framework's visibility layout
-//    (vtkShadowScreenBuffers::GetVisibility()), so that the last blur can
-//    write the receivers' texture: r = visibility 1 - S, g = 1 where a blur
-//    will touch or has touched the pixel (elsewhere receivers keep their own
-//    full-resolution hard shadow), a = D (<= 0: not blurred).
+// Every map holds the framework's visibility layout
+// (vtkShadowScreenBuffers::GetVisibility()), so that the last blur can write
+// the receivers' texture: r = visibility 1 - S, g = 1 where a blur will touch
+// or has touched the pixel (elsewhere receivers keep their own
+// full-resolution hard shadow), b = the surface's camera distance (0 on
+// background), a = D (<= 0: not blurred).
 uniform sampler2D contactMap;
 uniform float contactDepthTolerance;
 uniform bool contactDebugView;

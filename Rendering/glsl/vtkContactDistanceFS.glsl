@@ -4,8 +4,9 @@
 // distance: (distance)^Dp * Dm, or, with the light's size, the penumbra
 // width w = (d_receiver - d_blocker) * w_light / d_blocker (section 6) in
 // pixels, as a kernel size (PCF, Gaussian) or a number of blur passes
-// (multi-pass). A texel: r = S, g = D, b = the camera distance; background
-// stays 0.
+// (multi-pass). Written in the filtering layout (vtkContactCommonFS.glsl),
+// so that the map serves as one of the ping-pong buffers: r = 1 - S, g = 0
+// (not blurred yet), b = the camera distance, a = D; background stays 0.
 // Spot and directional lights: their map's raw depth (CONTACT_MAPS samplers
 // without comparison); point lights: their cube map of squared distances
 // (CONTACT_CUBES).
@@ -62,25 +63,36 @@ float vtkContactPassesFor(float width)
   return passes;
 }
 
-// The texel of light `k` for a shadowed fragment.
-vec4 vtkContactShadowed(int k, vec3 position, vec3 normal, float receiverDistance,
-  float blockerDistance, bool perspective)
+// What every light's texel shares, set once a fragment by
+// vtkContactCameraSetup(): the camera distance, and the screen pixels a world
+// length on the surface spans.
+float contactCameraDistance;
+float contactPixelsPerLength;
+
+void vtkContactCameraSetup(vec4 positionWC, vec3 normal)
 {
   vec3 camera = vtkShadowViewToWorld[3].xyz;
-  float cameraDistance = distance(position, camera);
+  contactCameraDistance = distance(positionWC.xyz, camera);
+  // The penumbra lies on the receiver, which the view foreshortens by
+  // |n.v| across its slope: an isotropic kernel sized for the unforeshortened
+  // width blurs that way 1 / |n.v| times too far (seen edge-on, far worse
+  // than a hard edge). Sizing for the foreshortened width errs the other
+  // way along the slope's level lines, where a narrower blur costs less.
+  float facing = abs(dot(normal, (camera - positionWC.xyz) / contactCameraDistance));
+  contactPixelsPerLength =
+    facing / (pixelFootprint.x + pixelFootprint.y * contactCameraDistance);
+}
+
+// The texel of light `k` for a shadowed fragment.
+vec4 vtkContactShadowed(int k, float receiverDistance, float blockerDistance, bool perspective)
+{
   float occluderDistance = max(receiverDistance - blockerDistance, 0.0);
   float d;
   if (useLightSize)
   {
     float world =
       occluderDistance * contactLightSize[k] / (perspective ? blockerDistance : 1.0);
-    // The penumbra lies on the receiver, which the view foreshortens by
-    // |n.v| across its slope: an isotropic kernel sized for the unforeshortened
-    // width blurs that way 1 / |n.v| times too far (seen edge-on, far worse
-    // than a hard edge). Sizing for the foreshortened width errs the other
-    // way along the slope's level lines, where a narrower blur costs less.
-    float facing = abs(dot(normal, (camera - position) / cameraDistance));
-    float pixels = world * facing / (pixelFootprint.x + pixelFootprint.y * cameraDistance);
+    float pixels = world * contactPixelsPerLength;
     d = countPasses ? vtkContactPassesFor(pixels) : pixels;
   }
   else
@@ -91,12 +103,12 @@ vec4 vtkContactShadowed(int k, vec3 position, vec3 normal, float receiverDistanc
     d = pow(occluderDistance, distancePower) * distanceMultiplier /
       (countPasses ? resolutionDivisor * resolutionDivisor : resolutionDivisor);
   }
-  return vec4(1.0, d, cameraDistance, 0.0);
+  return vec4(0.0, 0.0, contactCameraDistance, d);
 }
 
-vec4 vtkContactLit(vec3 position)
+vec4 vtkContactLit()
 {
-  return vec4(0.0, 0.0, distance(position, vtkShadowViewToWorld[3].xyz), 0.0);
+  return vec4(1.0, 0.0, contactCameraDistance, 0.0);
 }
 
 #if CONTACT_MAPS > 0
@@ -108,14 +120,14 @@ vec4 vtkContactDistance(sampler2D map, int k, vec4 positionWC, vec3 normal)
   p.xyz /= p.w;
   if (p.w <= 0.0 || any(lessThan(p.xyz, vec3(0.0))) || any(greaterThan(p.xyz, vec3(1.0))))
   {
-    return vtkContactLit(positionWC.xyz);
+    return vtkContactLit();
   }
   float blockerDepth = texture(map, p.xy).r;
   if (p.z <= blockerDepth)
   {
-    return vtkContactLit(positionWC.xyz);
+    return vtkContactLit();
   }
-  return vtkContactShadowed(k, positionWC.xyz, normal, vtkContactLightDistance(k, p.z),
+  return vtkContactShadowed(k, vtkContactLightDistance(k, p.z),
     vtkContactLightDistance(k, blockerDepth), contactEye[k].w > 0.0);
 }
 #endif
@@ -129,9 +141,8 @@ vec4 vtkContactDistance(samplerCube cube, int k, vec4 positionWC, vec3 normal)
   float stored = vtkShadowCubeStored(cube, direction, contactCubeRange[k]);
   if (dot(direction, direction) * contactDistanceBias <= stored)
   {
-    return vtkContactLit(positionWC.xyz);
+    return vtkContactLit();
   }
-  return vtkContactShadowed(
-    k, positionWC.xyz, normal, length(direction), sqrt(stored), true);
+  return vtkContactShadowed(k, length(direction), sqrt(stored), true);
 }
 #endif

@@ -4,9 +4,8 @@
 // pixels the prepare pass selected for this pass are drawn (depth mask):
 // those still blurring, and those whose D ran out in the pass before, copied
 // so that both ping-pong buffers agree on them from then on.
-uniform vec3 taps[64];
+uniform vec3 taps[64]; // offsets in pixels for this pass's kernel, and weights
 uniform int tapCount;
-uniform float kernelSize;
 
 void main()
 {
@@ -17,11 +16,12 @@ void main()
     gl_FragData[0] = c;
     return;
   }
-  float sum = 0.0;
-  float weights = 0.0;
-  for (int i = 0; i < tapCount; ++i)
+  // Tap 0 lies at the origin: this pixel.
+  float sum = taps[0].z * c.r;
+  float weights = taps[0].z;
+  for (int i = 1; i < tapCount; ++i)
   {
-    vec4 t = vtkContactFetch(pixel + ivec2(round(taps[i].xy * 0.5 * kernelSize)));
+    vec4 t = vtkContactFetch(pixel + ivec2(taps[i].xy));
     if (vtkContactSameSurface(c, t))
     {
       sum += taps[i].z * t.r;

@@ -1,7 +1,8 @@
 // Between passes 2 and 4: the umbra early-out (section 5: D = 0 where the
 // whole neighbourhood is shadowed) and the optional dilation of D (pass 3).
-// Reads the distance map; writes the filtering layout to both ping-pong
-// buffers, and a depth that lets multi-pass blur k (drawn at depth
+// Reads the distance map, the other ping-pong buffer, where pixels left
+// unblurred already hold their final value; writes the pixel with its D
+// settled, and a depth that lets multi-pass blur k (drawn at depth
 // 1 - k / 256) through only where D > k - 1: the ceil(D) passes that blur the
 // pixel and one more that copies its final value into the other buffer.
 // Elsewhere depth 1: no blur touches it.
@@ -10,8 +11,7 @@
 // both arms of a branch, but a loop ends once no pixel of a group runs it.
 uniform bool earlyOut;
 uniform bool dilation;
-uniform float dilationSize;
-uniform vec3 taps[64]; // Poisson offsets in [-1,1]^2 and Gaussian weights
+uniform vec3 taps[64]; // offsets in pixels over the dilation kernel, and weights
 uniform int tapCount;
 uniform sampler2D contactTiles;
 uniform int contactTileSize;
@@ -20,25 +20,26 @@ void main()
 {
   ivec2 pixel = vtkScreenPixel();
   vec4 c = vtkContactFetch(pixel);
-  float d = c.g;
+  float d = c.a;
   vec2 tiles = texelFetch(contactTiles, pixel / contactTileSize, 0).xy;
   if (d > 0.0 && earlyOut && tiles.x >= 1.0)
   {
     d = 0.0;
   }
-  else if (c.r == 0.0 && c.b > 0.0 && dilation)
+  else if (c.r == 1.0 && c.b > 0.0 && dilation)
   {
     // Lit pixels near a shadow take the weighted mean D of the shadowed taps.
-    // D varies slowly: 8 taps are enough. None without a shadow in reach.
+    // D varies slowly: 8 taps are enough (tap 0, this lit pixel, never
+    // counts). None without a shadow in reach.
     float sum = 0.0;
     float weights = 0.0;
     int count = tiles.y > 0.0 ? min(tapCount, 8) : 0;
-    for (int i = 0; i < count; ++i)
+    for (int i = 1; i < count; ++i)
     {
-      vec4 t = vtkContactFetch(pixel + ivec2(round(taps[i].xy * 0.5 * dilationSize)));
-      if (t.r > 0.0 && vtkContactSameSurface(c, t))
+      vec4 t = vtkContactFetch(pixel + ivec2(taps[i].xy));
+      if (t.r < 1.0 && vtkContactSameSurface(c, t))
       {
-        sum += taps[i].z * t.g;
+        sum += taps[i].z * t.a;
         weights += taps[i].z;
       }
     }
@@ -47,8 +48,6 @@ void main()
   // Below one (a pass, a pixel) a blur changes nothing worth the pixel's
   // sharper full-resolution hard shadow in the receivers.
   d = d >= 1.0 ? d : 0.0;
-  vec4 result = vec4(1.0 - c.r, d > 0.0 ? 1.0 : 0.0, c.b, d);
-  gl_FragData[0] = result;
-  gl_FragData[1] = result;
+  gl_FragData[0] = vec4(c.r, d > 0.0 ? 1.0 : 0.0, c.b, d);
   gl_FragDepth = d > 0.0 ? 1.0 - (min(ceil(d), 254.0) + 1.0) / 256.0 : 1.0;
 }

@@ -1,6 +1,8 @@
 // Tile classification for the prepare pass, step 1: per tile of
 // contactTileSize^2 pixels of the distance map (contactMap, read through a
-// bilinear sampler), the least and the greatest S. S is 0 or 1 there, so a
+// bilinear sampler), the least and the greatest S (1 - r; background counts
+// as shadowed, which only lets umbra pixels beside it out early, where they
+// are umbra anyway). S is 0 or 1 there, so a
 // bilinear tap on a texel corner, the mean of four, is 1 only if all four
 // are and 0 only if none is: a quarter of the fetches.
 uniform int contactTileSize;
@@ -16,7 +18,7 @@ void main()
   {
     for (int x = 1; x < contactTileSize; x += 2)
     {
-      float s = texture(contactMap, vec2(first + ivec2(x, y)) / vec2(size)).r;
+      float s = 1.0 - texture(contactMap, vec2(first + ivec2(x, y)) / vec2(size)).r;
       least = min(least, s);
       greatest = max(greatest, s);
     }

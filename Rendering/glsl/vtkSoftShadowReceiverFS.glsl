@@ -77,38 +77,53 @@ uniform vec2 vtkShadowScreenScale; // viewport pixels to screen-space texels
 uniform float vtkShadowLogNear;    // see vtkShadowPackFS.glsl
 uniform float vtkShadowCodesPerLog;
 
+// What the lookups of all lights share (their textures have one size): the
+// gather point, the bilinear weights and the fragment's distance code, set
+// once a fragment by vtkShadowScreenSetup().
+vec2 vtkShadowScreenCorner;
+vec4 vtkShadowScreenWeights; // lower left, lower right, upper left, upper right
+float vtkShadowScreenFragment;
+
+void vtkShadowScreenSetup(vec4 positionWC)
+{
+  // Clamped to the texel centres at the edges, as bilinear filtering clamps.
+  vec2 size = vec2(textureSize(vtkShadowScreen[0], 0));
+  vec2 p = clamp((gl_FragCoord.xy - vtkShadowViewportOrigin) * vtkShadowScreenScale - 0.5,
+    vec2(0.0), size - 1.0);
+  vec2 f = fract(p);
+  vtkShadowScreenCorner = (floor(p) + 1.0) / size;
+  vtkShadowScreenWeights =
+    vec4(1.0 - f.x, f.x, 1.0 - f.x, f.x) * vec4(1.0 - f.y, 1.0 - f.y, f.y, f.y) + 1.0e-4;
+  // The camera sits at the view-space origin.
+  vtkShadowScreenFragment = (log2(distance(positionWC.xyz, vtkShadowViewToWorld[3].xyz)) -
+                              vtkShadowLogNear) * vtkShadowCodesPerLog + 1.0;
+}
+
 // A screen-space visibility texture (vtkShadowScreenBuffers::BeginVisibility:
 // visibility, whether it is valid, and the surface's camera distance),
 // possibly smaller than the viewport, read coded (vtkShadowPackFS.glsl: one
 // float a texel, the four around the fragment gathered in one fetch):
-// bilinear over the four texels that lie on this fragment's surface (at
-// `positionWC`; camera distances within 2%), each giving its visibility where
-// valid and the fragment's own full-resolution `hard` one where not.
+// bilinear over the four texels that lie on this fragment's surface (at the
+// position given to vtkShadowScreenSetup(); camera distances within 2%),
+// each giving its visibility where valid and the fragment's own
+// full-resolution `hard` one where not.
 // Fragments no texel belongs to (silhouettes the buffer missed, translucent
 // surfaces not within 2% of an opaque one, surfaces seen within a few degrees
 // of edge-on) keep `hard`. A tolerance that grows with the distance's slope
 // would keep the screen-space result on grazing surfaces, but there the
 // isotropic screen-space kernels do no better than the hard shadow (README,
 // Quality).
-float vtkShadowScreenVisibility(sampler2D screen, vec4 positionWC, float hard)
+float vtkShadowScreenVisibility(sampler2D screen, float hard)
 {
-  // Clamped to the texel centres at the edges, as bilinear filtering clamps.
-  vec2 size = vec2(textureSize(screen, 0));
-  vec2 p = clamp((gl_FragCoord.xy - vtkShadowViewportOrigin) * vtkShadowScreenScale - 0.5,
-    vec2(0.0), size - 1.0);
-  vec2 f = fract(p);
   // Gathered at the four texels' shared corner as upper left, upper right,
   // lower right, lower left; reordered to lower left, lower right, upper
   // left, upper right.
-  vec4 codes = textureGather(screen, (floor(p) + 1.0) / size).wzxy;
+  vec4 codes = textureGather(screen, vtkShadowScreenCorner).wzxy;
   vec4 visibility = floor(codes / 2048.0);
   vec4 distances = codes - 2048.0 * visibility;
-  // The camera sits at the view-space origin.
-  float fragment = (log2(distance(positionWC.xyz, vtkShadowViewToWorld[3].xyz)) -
-                     vtkShadowLogNear) * vtkShadowCodesPerLog + 1.0;
   float tolerance = 0.0286 * vtkShadowCodesPerLog + 0.5; // log2(1.02), and rounding
-  vec4 weights = (vec4(1.0 - f.x, f.x, 1.0 - f.x, f.x) * vec4(1.0 - f.y, 1.0 - f.y, f.y, f.y) +
-                   1.0e-4) * vec4(lessThanEqual(abs(distances - fragment), vec4(tolerance))) *
+  vec4 weights = vtkShadowScreenWeights *
+    vec4(lessThanEqual(abs(distances - vtkShadowScreenFragment), vec4(tolerance))) *
     vec4(greaterThan(distances, vec4(0.0)));
   vec4 values = mix(visibility / 4094.0, vec4(hard), vec4(equal(visibility, vec4(4095.0))));
   float total = dot(weights, vec4(1.0));
