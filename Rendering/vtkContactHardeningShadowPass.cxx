@@ -56,21 +56,6 @@ std::vector<float> ScaledTaps(const std::vector<float>& taps, int size)
   }
   return scaled;
 }
-
-vtkSmartPointer<vtkTextureObject> FloatTexture(vtkOpenGLRenderWindow* context, int w, int h)
-{
-  auto texture = vtkSmartPointer<vtkTextureObject>::New();
-  texture->SetContext(context);
-  texture->SetMinificationFilter(vtkTextureObject::Nearest);
-  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-  texture->SetWrapS(vtkTextureObject::ClampToEdge);
-  texture->SetWrapT(vtkTextureObject::ClampToEdge);
-  texture->SetInternalFormat(GL_RGBA32F);
-  texture->SetFormat(GL_RGBA);
-  texture->SetDataType(GL_FLOAT);
-  texture->Allocate2D(w, h, 4, VTK_FLOAT);
-  return texture;
-}
 }
 
 class vtkContactHardeningShadowPass::vtkInternals
@@ -261,12 +246,18 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
   const int w = this->Screen->GetWidth();
   const int h = this->Screen->GetHeight();
   auto& lights = this->Maps->GetLights();
-  in.DistanceMaps.resize(std::min(lights.size(), static_cast<size_t>(in.LightsPerCameraPass)));
+  // A distance map is the second buffer of its light's ping-pong pair: for a
+  // multi-pass blur chain that ends on it (odd pass limit), it is the
+  // receivers' texture itself, and no map of its own is needed.
+  const bool chainEndsOnMap =
+    this->Variant == MultiPass && !this->DebugView && this->PassLimit % 2 == 1;
+  const size_t lightsPerPass = std::min(lights.size(), static_cast<size_t>(in.LightsPerCameraPass));
+  in.DistanceMaps.resize(chainEndsOnMap ? 0 : lightsPerPass);
   auto allocate = [context](vtkSmartPointer<vtkTextureObject>& map, int width, int height)
   {
     if (!map)
     {
-      map = FloatTexture(context, width, height);
+      map = vtkShadowScreenBuffers::NewFloatTexture(context, width, height, 4);
     }
     map->Resize(width, height);
   };
@@ -323,14 +314,10 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
   }
 
   // Pass 2 for up to LightsPerCameraPass lights at a time, drawn with the
-  // camera depth; then each light's filtering. A distance map is the second
-  // buffer of its light's ping-pong pair: for a multi-pass blur chain that
-  // ends on it (odd pass limit), it is the receivers' texture itself.
-  const bool chainEndsOnMap =
-    this->Variant == MultiPass && !this->DebugView && this->PassLimit % 2 == 1;
-  for (size_t first = 0; first < lights.size(); first += in.DistanceMaps.size())
+  // camera depth; then each light's filtering.
+  for (size_t first = 0; first < lights.size(); first += lightsPerPass)
   {
-    const size_t count = std::min(in.DistanceMaps.size(), lights.size() - first);
+    const size_t count = std::min(lightsPerPass, lights.size() - first);
     std::vector<vtkTextureObject*> targets;
     for (size_t k = 0; k < count; ++k)
     {

@@ -147,29 +147,37 @@ void vtkShadowScreenBuffers::DrawQuad(vtkOpenGLQuadHelper* quad,
 }
 
 //------------------------------------------------------------------------------
+vtkSmartPointer<vtkTextureObject> vtkShadowScreenBuffers::NewFloatTexture(
+  vtkOpenGLRenderWindow* context, int width, int height, int components)
+{
+  static const unsigned int formats[4][2] = { { GL_R32F, GL_RED }, { GL_RG32F, GL_RG },
+    { GL_RGB32F, GL_RGB }, { GL_RGBA32F, GL_RGBA } };
+  auto texture = vtkSmartPointer<vtkTextureObject>::New();
+  texture->SetContext(context);
+  texture->SetMinificationFilter(vtkTextureObject::Nearest);
+  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  texture->SetInternalFormat(formats[components - 1][0]);
+  texture->SetFormat(formats[components - 1][1]);
+  texture->SetDataType(GL_FLOAT);
+  texture->Allocate2D(width, height, components, VTK_FLOAT);
+  return texture;
+}
+
+//------------------------------------------------------------------------------
 vtkTextureObject* vtkShadowScreenBuffers::GetVisibility(int slot)
 {
   while (static_cast<int>(this->Visibility.size()) <= slot)
   {
-    auto texture = vtkSmartPointer<vtkTextureObject>::New();
-    texture->SetContext(this->Context);
-    texture->SetMinificationFilter(vtkTextureObject::Nearest);
-    texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-    texture->SetWrapS(vtkTextureObject::ClampToEdge);
-    texture->SetWrapT(vtkTextureObject::ClampToEdge);
-    texture->SetInternalFormat(GL_RGBA32F);
-    texture->SetFormat(GL_RGBA);
-    texture->SetDataType(GL_FLOAT);
-    texture->Allocate2D(this->Width, this->Height, 4, VTK_FLOAT);
-    this->Visibility.push_back(texture);
+    this->Visibility.push_back(NewFloatTexture(this->Context, this->Width, this->Height, 4));
   }
   return this->Visibility[slot];
 }
 
 //------------------------------------------------------------------------------
-void vtkShadowScreenBuffers::BeginVisibility(int slot, float clear)
+void vtkShadowScreenBuffers::BindFramebuffer()
 {
-  vtkTextureObject* visibility = this->GetVisibility(slot);
   if (!this->Framebuffer)
   {
     this->Framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
@@ -178,10 +186,18 @@ void vtkShadowScreenBuffers::BeginVisibility(int slot, float clear)
   vtkOpenGLState* state = this->Context->GetState();
   state->PushFramebufferBindings();
   this->Framebuffer->Bind();
-  this->Framebuffer->AddColorAttachment(0, visibility);
-  this->Framebuffer->ActivateDrawBuffers(1);
   state->vtkglViewport(0, 0, this->Width, this->Height);
   state->vtkglScissor(0, 0, this->Width, this->Height);
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenBuffers::BeginVisibility(int slot, float clear)
+{
+  vtkTextureObject* visibility = this->GetVisibility(slot);
+  this->BindFramebuffer();
+  vtkOpenGLState* state = this->Context->GetState();
+  this->Framebuffer->AddColorAttachment(0, visibility);
+  this->Framebuffer->ActivateDrawBuffers(1);
   state->vtkglClearColor(clear, 0.0f, 0.0f, 0.0f);
   state->vtkglClear(GL_COLOR_BUFFER_BIT);
 }
@@ -214,34 +230,17 @@ bool vtkShadowScreenBuffers::Pack(int numberOfLights)
   {
     return false;
   }
-  if (!this->Framebuffer)
-  {
-    this->Framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-    this->Framebuffer->SetContext(this->Context);
-  }
   vtkOpenGLState* state = this->Context->GetState();
   vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
   state->vtkglDisable(GL_BLEND);
-  state->PushFramebufferBindings();
-  this->Framebuffer->Bind();
-  state->vtkglViewport(0, 0, this->Width, this->Height);
-  state->vtkglScissor(0, 0, this->Width, this->Height);
+  this->BindFramebuffer();
   this->Packed.resize(numberOfLights);
   for (int slot = 0; slot < numberOfLights; ++slot)
   {
     auto& packed = this->Packed[slot];
     if (!packed)
     {
-      packed = vtkSmartPointer<vtkTextureObject>::New();
-      packed->SetContext(this->Context);
-      packed->SetMinificationFilter(vtkTextureObject::Nearest);
-      packed->SetMagnificationFilter(vtkTextureObject::Nearest);
-      packed->SetWrapS(vtkTextureObject::ClampToEdge);
-      packed->SetWrapT(vtkTextureObject::ClampToEdge);
-      packed->SetInternalFormat(GL_R32F);
-      packed->SetFormat(GL_RED);
-      packed->SetDataType(GL_FLOAT);
-      packed->Allocate2D(this->Width, this->Height, 1, VTK_FLOAT);
+      packed = NewFloatTexture(this->Context, this->Width, this->Height, 1);
     }
     packed->Resize(this->Width, this->Height);
     this->Framebuffer->AddColorAttachment(0, packed);

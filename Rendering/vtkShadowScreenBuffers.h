@@ -99,6 +99,13 @@ public:
   void EndVisibility();
 
   /**
+   * A float texture of 1 to 4 components, nearest filtering, clamped to its
+   * edges: what screen-space passes draw into and read texel by texel.
+   */
+  static vtkSmartPointer<vtkTextureObject> NewFloatTexture(
+    vtkOpenGLRenderWindow* context, int width, int height, int components);
+
+  /**
    * Light `slot`'s visibility texture (as above), allocated on demand, for a
    * technique that draws into it with its own framebuffer: every texel must
    * be written, nothing clears it.
@@ -123,6 +130,10 @@ public:
   void ReleaseGraphicsResources(vtkWindow* w);
 
 private:
+  /// Push the framebuffer bindings and bind this->Framebuffer (created on
+  /// demand) over the buffers' size.
+  void BindFramebuffer();
+
   vtkOpenGLRenderWindow* Context = nullptr;
   int Divisor = 1;
   int Width = 0; // the buffers', Divisor times smaller than the viewport
