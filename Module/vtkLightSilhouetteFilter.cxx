@@ -46,6 +46,12 @@ struct vtkLightSilhouetteFilter::vtkInternals
   vtksoftshadows::NormalConeTree Tree;
   std::vector<unsigned char> Front; // brute force: each face toward the light?
 
+  // Lists every search fills, kept from one to the next: touching fresh
+  // memory can cost more than the search itself.
+  vtksoftshadows::NormalConeTree::QueryBuffers TreeBuffers;
+  std::vector<std::vector<std::int32_t>> Blocks; // brute force: silhouette edges a block
+  std::vector<std::int32_t> Silhouette;          // 3 an edge: id, points
+
   bool FaceFront(std::int32_t face, const double light[4]) const
   {
     return FacesLight(
@@ -94,16 +100,18 @@ namespace
 // blocks joined in order: the output order does not depend on the threads.
 template <typename EdgeFn, typename FrontFn, typename AppendFn, typename Internals>
 void TestInBlocks(vtkIdType count, EdgeFn&& edge, FrontFn&& front, AppendFn&& append,
-  const Internals& internals, std::vector<std::int32_t>& silhouette)
+  const Internals& internals, std::vector<std::vector<std::int32_t>>& found,
+  std::vector<std::int32_t>& silhouette)
 {
   const vtkIdType blockSize = 1 << 14;
   const vtkIdType numBlocks = (count + blockSize - 1) / blockSize;
-  std::vector<std::vector<std::int32_t>> found(numBlocks);
+  found.resize(std::max(found.size(), static_cast<std::size_t>(numBlocks)));
   vtkSMPTools::For(0, numBlocks, 1,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType block = begin; block < end; ++block)
       {
+        found[block].clear();
         const vtkIdType last = std::min(count, (block + 1) * blockSize);
         for (vtkIdType i = block * blockSize; i < last; ++i)
         {
@@ -115,9 +123,9 @@ void TestInBlocks(vtkIdType count, EdgeFn&& edge, FrontFn&& front, AppendFn&& ap
         }
       }
     });
-  for (const auto& list : found)
+  for (vtkIdType block = 0; block < numBlocks; ++block)
   {
-    silhouette.insert(silhouette.end(), list.begin(), list.end());
+    silhouette.insert(silhouette.end(), found[block].begin(), found[block].end());
   }
 }
 }
@@ -309,7 +317,8 @@ int vtkLightSilhouetteFilter::RequestData(
     out.push_back(edgePoints[2 * e + (toward ? 1 : 0)]);
   };
   const auto searchStart = std::chrono::steady_clock::now();
-  std::vector<std::int32_t> silhouette;
+  std::vector<std::int32_t>& silhouette = internals.Silhouette;
+  silhouette.clear();
   if (this->Method == BRUTE_FORCE)
   {
     const vtkIdType numFaces = internals.Mesh.GetNumberOfFaces();
@@ -324,19 +333,20 @@ int vtkLightSilhouetteFilter::RequestData(
       });
     auto front = [&](std::int32_t face) { return internals.Front[face] != 0; };
     TestInBlocks(
-      numEdges, [](vtkIdType e) { return e; }, front, append, internals, silhouette);
+      numEdges, [](vtkIdType e) { return e; }, front, append, internals, internals.Blocks,
+      silhouette);
     this->NumberOfTestedEdges = numEdges;
   }
   else
   {
     this->NumberOfTestedEdges =
-      internals.Tree.Query(light, internals.Mesh.MaxPointNorm, silhouette);
+      internals.Tree.Query(light, internals.Mesh.MaxPointNorm, internals.TreeBuffers, silhouette);
     auto front = [&](std::int32_t face) { return internals.FaceFront(face, light); };
     const auto& irregular = internals.Irregular;
     TestInBlocks(
       static_cast<vtkIdType>(irregular.size()),
       [&irregular](vtkIdType i) { return static_cast<vtkIdType>(irregular[i]); }, front, append,
-      internals, silhouette);
+      internals, internals.Blocks, silhouette);
     this->NumberOfTestedEdges += static_cast<vtkIdType>(irregular.size());
   }
   this->SearchTime =

@@ -1,28 +1,28 @@
 #include "vtkSoftShadowsNormalConeTree.h"
 
-#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 
-#include <glm/geometric.hpp> // for glm::dot, glm::cross, glm::length
+#include <glm/geometric.hpp> // for glm::dot, glm::length
 #include <glm/vec3.hpp>      // for glm::dvec3
 
 #include <algorithm>  // for std::nth_element, std::min, std::max
-#include <cmath>      // for std::abs, std::sqrt
+#include <cmath>      // for std::abs, std::ldexp, std::nextafter
+#include <cstring>    // for std::memcpy
 #include <functional> // for std::function
 
 namespace vtksoftshadows
 {
 namespace
 {
-// Leaves of 8 to 16 edges: testing a leaf's edges (contiguous in memory) costs
-// less than one more level of nodes (a cache miss each).
+// Leaves of 8 to 16 edges: testing a leaf's edges (together in memory) costs
+// less than one more level of nodes.
 constexpr std::int32_t LeafSize = 16;
-static_assert(2 * LeafSize <= 256, "a leaf's faces are numbered in a byte");
+static_assert(2 * LeafSize <= 64, "a leaf's faces are bits of a 64-bit mask");
 // The top levels of the tree are split serially, into up to 2^SerialDepth
 // subtrees that are then built in parallel.
 constexpr int SerialDepth = 5;
-// A query shares its work among threads below this many nodes from the root,
-// and only for trees of this many edges or more.
+// A query shares its work among threads below this many nodes and leaves from
+// the root, and only for trees of this many edges or more.
 constexpr std::size_t ParallelFrontier = 64;
 constexpr vtkIdType SerialBelowEdges = vtkIdType(1) << 14;
 
@@ -42,7 +42,45 @@ float RoundUp(double value)
   const float f = static_cast<float>(value);
   return static_cast<double>(f) >= value ? f : std::nextafter(f, VTK_FLOAT_MAX);
 }
+
+// A hint that memory will be read soon; nothing where the compiler has none.
+inline void Prefetch(const void* address)
+{
+#if defined(__GNUC__) || defined(__clang__)
+  __builtin_prefetch(address);
+#else
+  (void)address;
+#endif
 }
+
+inline int LowestBit(std::uint64_t bits)
+{
+#if defined(__GNUC__) || defined(__clang__)
+  return __builtin_ctzll(bits);
+#else
+  int k = 0;
+  while (!(bits & 1))
+  {
+    bits >>= 1;
+    ++k;
+  }
+  return k;
+#endif
+}
+}
+
+//------------------------------------------------------------------------------
+// A node of the binary tree the build makes first, with its bounds already in
+// the form a Node keeps for each of its children.
+struct NormalConeTree::BinaryNode
+{
+  float Axis[3];
+  float Radius;
+  float Center[3];
+  float OffsetMin, OffsetMax;
+  std::int32_t Begin, End; // its edges, Begin .. End - 1 in tree order
+  std::int32_t Right;      // right child (the left one follows the node); < 0 in a leaf
+};
 
 //------------------------------------------------------------------------------
 struct NormalConeTree::Builder
@@ -54,8 +92,9 @@ struct NormalConeTree::Builder
   RawVector<std::int32_t> Order; // the tree's edge order, into Edges
   RawVector<float> Keys;         // 6 an edge: scaled midpoint, mean normal (only to split)
 
-  // The node's cone, centre and offset range, from all faces of its edges.
-  void Bound(Node& node) const
+  // The node's axis, radius, centre and offset range, from all faces of its
+  // edges, each rounded to float outward.
+  void Bound(BinaryNode& node) const
   {
     glm::dvec3 sum(0.0), center(0.0);
     for (std::int32_t i = node.Begin; i < node.End; ++i)
@@ -66,15 +105,18 @@ struct NormalConeTree::Builder
       center += Vec(this->Midpoints.data() + 3 * static_cast<vtkIdType>(this->Order[i]));
     }
     const double length = glm::length(sum);
-    const glm::dvec3 axis = length > 0.0 ? sum / length : glm::dvec3(0.0, 0.0, 1.0);
+    glm::dvec3 axis = length > 0.0 ? sum / length : glm::dvec3(0.0, 0.0, 1.0);
     center /= static_cast<double>(node.End - node.Begin);
-    // The centre is any point: take one a float holds exactly.
+    // Axis and centre may be any vector and point: take ones a float holds
+    // exactly, and bound the faces against those.
     for (int c = 0; c < 3; ++c)
     {
+      node.Axis[c] = static_cast<float>(axis[c]);
+      axis[c] = node.Axis[c];
       node.Center[c] = static_cast<float>(center[c]);
       center[c] = node.Center[c];
     }
-    double cosMin = 1.0, sinMax = 0.0;
+    double radius = 0.0;
     double offsetMin = VTK_DOUBLE_MAX, offsetMax = -VTK_DOUBLE_MAX;
     for (std::int32_t i = node.Begin; i < node.End; ++i)
     {
@@ -82,19 +124,13 @@ struct NormalConeTree::Builder
       for (std::int32_t f : edge.Faces)
       {
         const glm::dvec3 n = Vec(this->Normals + 3 * static_cast<vtkIdType>(f));
-        cosMin = std::min(cosMin, glm::dot(axis, n));
-        sinMax = std::max(sinMax, glm::length(glm::cross(axis, n)));
+        radius = std::max(radius, glm::length(n - axis));
         const double e = this->Offsets[f] - glm::dot(n, center);
         offsetMin = std::min(offsetMin, e);
         offsetMax = std::max(offsetMax, e);
       }
     }
-    for (int c = 0; c < 3; ++c)
-    {
-      node.Axis[c] = axis[c];
-    }
-    node.Cos = RoundDown(cosMin);
-    node.Sin = RoundUp(std::min(1.0, sinMax));
+    node.Radius = RoundUp(radius);
     node.OffsetMin = RoundDown(offsetMin);
     node.OffsetMax = RoundUp(offsetMax);
   }
@@ -134,11 +170,11 @@ struct NormalConeTree::Builder
   }
 
   // A whole subtree, depth first, into `nodes` (Right relative to `nodes`).
-  std::int32_t BuildSubtree(std::int32_t begin, std::int32_t end, std::vector<Node>& nodes)
+  std::int32_t BuildSubtree(std::int32_t begin, std::int32_t end, std::vector<BinaryNode>& nodes)
   {
     const std::int32_t index = static_cast<std::int32_t>(nodes.size());
     nodes.emplace_back();
-    Node node;
+    BinaryNode node;
     node.Begin = begin;
     node.End = end;
     node.Right = -1;
@@ -159,12 +195,12 @@ void NormalConeTree::Build(const RawVector<Edge>& edges, const RawVector<double>
   const double* normals, const double* offsets)
 {
   this->Nodes.clear();
-  this->LeafPlanes.clear();
+  this->LeafBlocks.clear();
   this->LeafFaces.clear();
-  this->EdgeFaces.clear();
   this->EdgeOutputs.clear();
   this->Planes.clear();
   const vtkIdType numEdges = static_cast<vtkIdType>(edges.size());
+  this->NumberOfEdges = numEdges;
   if (numEdges == 0)
   {
     return;
@@ -207,7 +243,7 @@ void NormalConeTree::Build(const RawVector<Edge>& edges, const RawVector<double>
   // left for subtrees, in depth-first order.
   struct Top
   {
-    Node Data;
+    BinaryNode Data;
     int Left = -1, Right = -1;       // children: indices into tops, or
     int LeftSub = -1, RightSub = -1; // indices into subtree ranges
   };
@@ -237,7 +273,7 @@ void NormalConeTree::Build(const RawVector<Edge>& edges, const RawVector<double>
   const int root = split(0, static_cast<std::int32_t>(numEdges), 0);
 
   // The subtrees, in parallel.
-  std::vector<std::vector<Node>> subtrees(ranges.size());
+  std::vector<std::vector<BinaryNode>> subtrees(ranges.size());
   vtkSMPTools::For(0, static_cast<vtkIdType>(ranges.size()), 1,
     [&](vtkIdType begin, vtkIdType end)
     {
@@ -247,22 +283,24 @@ void NormalConeTree::Build(const RawVector<Edge>& edges, const RawVector<double>
       }
     });
 
-  // Assembly, depth first: a node, its left child's nodes, its right child's.
-  this->Nodes.reserve(2 * (numEdges / LeafSize + 1));
-  auto appendSubtree = [this, &subtrees](int r)
+  // Assembly of the binary tree, depth first: a node, its left child's
+  // nodes, its right child's.
+  std::vector<BinaryNode> binary;
+  binary.reserve(2 * (numEdges / LeafSize + 1));
+  auto appendSubtree = [&binary, &subtrees](int r)
   {
-    const std::int32_t base = static_cast<std::int32_t>(this->Nodes.size());
-    for (Node node : subtrees[r])
+    const std::int32_t base = static_cast<std::int32_t>(binary.size());
+    for (BinaryNode node : subtrees[r])
     {
       node.Right = node.Right >= 0 ? node.Right + base : -1;
-      this->Nodes.push_back(node);
+      binary.push_back(node);
     }
-    std::vector<Node>().swap(subtrees[r]);
+    std::vector<BinaryNode>().swap(subtrees[r]);
   };
   std::function<void(int)> append = [&](int top)
   {
-    const std::int32_t index = static_cast<std::int32_t>(this->Nodes.size());
-    this->Nodes.push_back(tops[top].Data);
+    const std::int32_t index = static_cast<std::int32_t>(binary.size());
+    binary.push_back(tops[top].Data);
     if (tops[top].Left >= 0)
     {
       append(tops[top].Left);
@@ -271,7 +309,7 @@ void NormalConeTree::Build(const RawVector<Edge>& edges, const RawVector<double>
     {
       appendSubtree(tops[top].LeftSub);
     }
-    this->Nodes[index].Right = static_cast<std::int32_t>(this->Nodes.size());
+    binary[index].Right = static_cast<std::int32_t>(binary.size());
     if (tops[top].Right >= 0)
     {
       append(tops[top].Right);
@@ -290,10 +328,7 @@ void NormalConeTree::Build(const RawVector<Edge>& edges, const RawVector<double>
     appendSubtree(-root - 1);
   }
 
-  // What the leaves read, leaf by leaf in tree order: for each edge two
-  // bytes, its faces among its leaf's; for each leaf the float planes of its
-  // faces, together in memory; the exact planes only for the rare faces the
-  // float test cannot decide, and ids and points only for silhouette edges.
+  // The exact planes, for the rare faces the float test cannot decide.
   std::int32_t maxFace = 0;
   for (const Edge& edge : edges)
   {
@@ -308,89 +343,202 @@ void NormalConeTree::Build(const RawVector<Edge>& edges, const RawVector<double>
     this->Planes[4 * f + 3] = offsets[f];
     this->MaxOffset = std::max(this->MaxOffset, std::abs(offsets[f]));
   }
-  this->EdgeFaces.resize(2 * numEdges);
+
+  // The binary tree collapsed into nodes of up to four children: a node's
+  // children are its binary descendants two levels down, or fewer where
+  // leaves come first. Nodes and leaves are laid out depth first, children in
+  // tree order.
   this->EdgeOutputs.resize(3 * numEdges);
-  this->LeafPlanes.clear();
-  this->LeafFaces.clear();
+  this->Nodes.reserve(binary.size() / 3 + 1);
   RawVector<std::int32_t> local(numFaces);
   std::fill(local.begin(), local.end(), -1);
-  for (Node& node : this->Nodes)
+  auto numEdgesOf = [&binary](std::int32_t b) { return binary[b].End - binary[b].Begin; };
+  std::function<std::int32_t(const std::int32_t*, int)> collapse = [&](const std::int32_t* children,
+                                                                     int count) -> std::int32_t
   {
-    if (node.Right >= 0)
+    std::int32_t slots[4] = { children[0], count > 1 ? children[1] : -1, -1, -1 };
+    while (count < 4)
     {
-      continue;
-    }
-    const std::int32_t first = static_cast<std::int32_t>(this->LeafFaces.size());
-    node.Right = -1 - first;
-    for (std::int32_t i = node.Begin; i < node.End; ++i)
-    {
-      const Edge& edge = edges[builder.Order[i]];
-      for (int k = 0; k < 2; ++k)
+      int widest = -1;
+      for (int k = 0; k < count; ++k)
       {
-        const std::int32_t f = edge.Faces[k];
-        if (local[f] < 0)
+        if (binary[slots[k]].Right >= 0 &&
+          (widest < 0 || numEdgesOf(slots[k]) > numEdgesOf(slots[widest])))
         {
-          local[f] = static_cast<std::int32_t>(this->LeafFaces.size()) - first;
-          this->LeafFaces.push_back(f);
-          for (int c = 0; c < 4; ++c)
-          {
-            this->LeafPlanes.push_back(static_cast<float>(this->Planes[4 * f + c]));
-          }
+          widest = k;
         }
-        this->EdgeFaces[2 * i + k] = static_cast<std::uint8_t>(local[f]);
       }
-      this->EdgeOutputs[3 * i] = edge.Id;
-      this->EdgeOutputs[3 * i + 1] = edge.Points[0];
-      this->EdgeOutputs[3 * i + 2] = edge.Points[1];
+      if (widest < 0)
+      {
+        break;
+      }
+      const std::int32_t opened = slots[widest];
+      slots[widest] = opened + 1;
+      slots[count++] = binary[opened].Right;
     }
-    for (std::size_t j = static_cast<std::size_t>(first); j < this->LeafFaces.size(); ++j)
+    // In tree order (an insertion sort: at most four).
+    for (int k = 1; k < count; ++k)
     {
-      local[this->LeafFaces[j]] = -1;
+      for (int j = k; j > 0 && binary[slots[j]].Begin < binary[slots[j - 1]].Begin; --j)
+      {
+        std::swap(slots[j], slots[j - 1]);
+      }
     }
+    const std::int32_t index = static_cast<std::int32_t>(this->Nodes.size());
+    this->Nodes.emplace_back();
+    Node node{};
+    for (int k = 0; k < 4; ++k)
+    {
+      node.Child[k] = Empty;
+    }
+    for (int k = 0; k < count; ++k)
+    {
+      const BinaryNode& b = binary[slots[k]];
+      node.AxisX[k] = b.Axis[0];
+      node.AxisY[k] = b.Axis[1];
+      node.AxisZ[k] = b.Axis[2];
+      node.Radius[k] = b.Radius;
+      node.CenterX[k] = b.Center[0];
+      node.CenterY[k] = b.Center[1];
+      node.CenterZ[k] = b.Center[2];
+      node.OffsetMin[k] = b.OffsetMin;
+      node.OffsetMax[k] = b.OffsetMax;
+      if (b.Right >= 0)
+      {
+        const std::int32_t grandchildren[2] = { slots[k] + 1, b.Right };
+        node.Child[k] = collapse(grandchildren, 2);
+      }
+      else
+      {
+        node.Child[k] = -1 - this->AppendLeaf(builder.Order.data(), b.Begin, b.End, edges, local);
+      }
+    }
+    this->Nodes[index] = node;
+    return index;
+  };
+  if (binary[0].Right >= 0)
+  {
+    const std::int32_t children[2] = { 1, binary[0].Right };
+    collapse(children, 2);
+  }
+  else
+  {
+    const std::int32_t only = 0;
+    collapse(&only, 1);
   }
 }
 
 //------------------------------------------------------------------------------
-double NormalConeTree::Tolerance(const double light[4], double scale)
+std::int32_t NormalConeTree::AppendLeaf(const std::int32_t* order, std::int32_t begin,
+  std::int32_t end, const RawVector<Edge>& edges, RawVector<std::int32_t>& local)
 {
-  // Every term of the bounds is computed with a relative error of a few
-  // units of round-off (1e-16) of |L| + |w| scale; 1e-10 is a margin of about
-  // a million over that, and costs only visits of nodes within 1e-10 of
-  // grazing the light.
-  const double l = std::sqrt(light[0] * light[0] + light[1] * light[1] + light[2] * light[2]);
-  return 1e-10 * (l + std::abs(light[3]) * 2.0 * scale);
+  const std::int32_t first = static_cast<std::int32_t>(this->LeafBlocks.size());
+  LeafHeader header;
+  header.EdgeBegin = begin;
+  header.FaceBase = static_cast<std::int32_t>(this->LeafFaces.size());
+  header.NumEdges = end - begin;
+  std::uint8_t pairs[2 * LeafSize];
+  for (std::int32_t i = begin; i < end; ++i)
+  {
+    const Edge& edge = edges[order[i]];
+    for (int k = 0; k < 2; ++k)
+    {
+      const std::int32_t f = edge.Faces[k];
+      if (local[f] < 0)
+      {
+        local[f] = static_cast<std::int32_t>(this->LeafFaces.size()) - header.FaceBase;
+        this->LeafFaces.push_back(f);
+      }
+      pairs[2 * (i - begin) + k] = static_cast<std::uint8_t>(local[f]);
+    }
+    this->EdgeOutputs[3 * static_cast<vtkIdType>(i)] = edge.Id;
+    this->EdgeOutputs[3 * static_cast<vtkIdType>(i) + 1] = edge.Points[0];
+    this->EdgeOutputs[3 * static_cast<vtkIdType>(i) + 2] = edge.Points[1];
+  }
+  header.NumFaces = static_cast<std::int32_t>(this->LeafFaces.size()) - header.FaceBase;
+
+  Block block{};
+  std::memcpy(block.Values, &header, sizeof(header));
+  this->LeafBlocks.push_back(block);
+  for (std::int32_t group = 0; group < header.NumFaces; group += 4)
+  {
+    Block planes[4] = {};
+    for (std::int32_t k = 0; k < 4 && group + k < header.NumFaces; ++k)
+    {
+      const double* plane = this->Planes.data() + 4 * this->LeafFaces[header.FaceBase + group + k];
+      for (int c = 0; c < 4; ++c)
+      {
+        planes[c].Values[k] = static_cast<float>(plane[c]);
+      }
+    }
+    this->LeafBlocks.insert(this->LeafBlocks.end(), planes, planes + 4);
+  }
+  for (std::int32_t i = 0; i < 2 * header.NumEdges; i += sizeof(Block))
+  {
+    block = Block{};
+    std::memcpy(
+      block.Values, pairs + i, std::min<std::size_t>(sizeof(Block), 2 * header.NumEdges - i));
+    this->LeafBlocks.push_back(block);
+  }
+  for (std::int32_t j = header.FaceBase; j < header.FaceBase + header.NumFaces; ++j)
+  {
+    local[this->LeafFaces[j]] = -1;
+  }
+  return first;
 }
 
 //------------------------------------------------------------------------------
-bool NormalConeTree::OneSided(const Node& node, const double light[4], double tolerance)
+float NormalConeTree::Tolerance(const double light[4], double scale)
 {
-  // g_f = n_f . V - w e_f with V = L - w c and e_f = d_f - n_f . c.
-  const double w = light[3];
-  const glm::dvec3 v(
-    light[0] - w * node.Center[0], light[1] - w * node.Center[1], light[2] - w * node.Center[2]);
-  const glm::dvec3 axis = Vec(node.Axis);
-  const double av = glm::dot(axis, v);                // |V| cos(phi)
-  const double sv = glm::length(glm::cross(axis, v)); // |V| sin(phi), accurate for small phi
-  const double vv = glm::length(v);
-  // n . V over the cone: |V| cos(phi + t) at least (or -|V| once phi + t >= pi),
-  // |V| cos(phi - t) at most (or |V| once phi <= t). An overestimated sin(t)
-  // only widens both bounds.
-  const double lower = av <= -vv * node.Cos ? -vv : av * node.Cos - sv * node.Sin;
-  const double upper = av >= vv * node.Cos ? vv : av * node.Cos + sv * node.Sin;
-  const double gMin = lower - (w > 0.0 ? w * node.OffsetMax : w * node.OffsetMin);
-  const double gMax = upper - (w > 0.0 ? w * node.OffsetMin : w * node.OffsetMax);
-  return gMin > tolerance || gMax < -tolerance;
+  // The float test of a child errs by at most about a dozen units of float
+  // round-off (2^-24) of |L|_1 + |w| 4 scale (|c| <= scale, |e_f| <= 2 scale):
+  // rounding L, forming V = L - w c and a . V, the products with r and the
+  // offsets, and the squares compared. 2^-16 is a margin of over 20 over
+  // that (and of billions over the double round-off of the exact test), and
+  // costs only visits of nodes within 2^-16 of grazing the light.
+  const double bound =
+    std::abs(light[0]) + std::abs(light[1]) + std::abs(light[2]) + std::abs(light[3]) * 4.0 * scale;
+  return RoundUp(std::ldexp(bound, -16) + 1e-30);
 }
 
 //------------------------------------------------------------------------------
-vtkIdType NormalConeTree::Query(
-  const double light[4], double scale, std::vector<std::int32_t>& silhouette) const
+unsigned NormalConeTree::VisitMask(const Node& node, const float light[4], float tolerance)
+{
+  // g_f = n_f . V - w e_f with V = L - w c: n_f . V lies within r |V| of
+  // a . V, and w e_f within w times the offsets' range. All faces are on one
+  // side when the gap m between a . V - w e and zero exceeds r |V| (squared:
+  // no square root), with m the larger of the margins toward each side.
+  unsigned mask = 0;
+  for (int k = 0; k < 4; ++k)
+  {
+    const float vx = light[0] - light[3] * node.CenterX[k];
+    const float vy = light[1] - light[3] * node.CenterY[k];
+    const float vz = light[2] - light[3] * node.CenterZ[k];
+    const float av = node.AxisX[k] * vx + node.AxisY[k] * vy + node.AxisZ[k] * vz;
+    const float vv = vx * vx + vy * vy + vz * vz;
+    const float e0 = light[3] * node.OffsetMin[k];
+    const float e1 = light[3] * node.OffsetMax[k];
+    const float toward = av - std::max(e0, e1) - tolerance; // g_f > 0 for all when > r |V|
+    const float away = std::min(e0, e1) - av - tolerance;   // g_f < 0 for all when > r |V|
+    const float m = std::max(toward, away);
+    const float r = node.Radius[k];
+    const bool oneSided = m > 0.0f && m * m > r * r * vv;
+    mask |= static_cast<unsigned>(!oneSided && node.Child[k] != Empty) << k;
+  }
+  return mask;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType NormalConeTree::Query(const double light[4], double scale, QueryBuffers& buffers,
+  std::vector<std::int32_t>& silhouette) const
 {
   if (this->Nodes.empty())
   {
     return 0;
   }
-  const double tolerance = Tolerance(light, scale);
+  const float tolerance = Tolerance(light, scale);
+  const float lightF[4] = { static_cast<float>(light[0]), static_cast<float>(light[1]),
+    static_cast<float>(light[2]), static_cast<float>(light[3]) };
 
   // Which side of the light a face is on: in float, and again in double, as
   // the brute-force search does, only where the float result is within its
@@ -398,151 +546,175 @@ vtkIdType NormalConeTree::Query(
   // times the sum of the terms' magnitudes (and rounding n, d and L to float
   // by as much again): 7 such errors at most; 16 leaves a margin. Both
   // searches therefore take the same decision for every face.
-  const float lightF[4] = { static_cast<float>(light[0]), static_cast<float>(light[1]),
-    static_cast<float>(light[2]), static_cast<float>(light[3]) };
   const float bound = static_cast<float>(16.0 * std::ldexp(1.0, -24) *
       (std::abs(light[0]) + std::abs(light[1]) + std::abs(light[2]) +
         std::abs(light[3]) * this->MaxOffset) +
     1e-30);
-  const double* exactPlanes = this->Planes.data();
+  const Node* nodes = this->Nodes.data();
+  const Block* blocks = this->LeafBlocks.data();
   const std::int32_t* leafFaces = this->LeafFaces.data();
-  auto front = [&](const float* p, std::int32_t entry)
+  const double* exactPlanes = this->Planes.data();
+  const std::int32_t* edgeOutputs = this->EdgeOutputs.data();
+
+  // A leaf's silhouette edges, as their index in tree order times two, plus
+  // one when the edge's first face faces the light.
+  auto testLeaf = [&](std::int32_t first, std::vector<std::int32_t>& found) -> vtkIdType
   {
-    const float g = p[0] * lightF[0] + p[1] * lightF[1] + p[2] * lightF[2] - lightF[3] * p[3];
-    if (std::abs(g) > bound)
+    LeafHeader header;
+    std::memcpy(&header, blocks[first].Values, sizeof(header));
+    const float* planes = blocks[first + 1].Values;
+    const std::int32_t groups = (header.NumFaces + 3) / 4;
+    std::uint64_t front = 0, unsure = 0;
+    for (std::int32_t group = 0; group < groups; ++group)
     {
-      return g > 0.0f;
+      const float* p = planes + 16 * group;
+      for (int k = 0; k < 4; ++k)
+      {
+        const float g =
+          p[k] * lightF[0] + p[4 + k] * lightF[1] + p[8 + k] * lightF[2] - lightF[3] * p[12 + k];
+        front |= static_cast<std::uint64_t>(g > bound) << (4 * group + k);
+        unsure |= static_cast<std::uint64_t>(!(std::abs(g) > bound)) << (4 * group + k);
+      }
     }
-    const double* exact = exactPlanes + 4 * static_cast<vtkIdType>(leafFaces[entry]);
-    return FacesLight(exact, exact[3], light);
+    unsure &= header.NumFaces == 64 ? ~std::uint64_t(0) : (std::uint64_t(1) << header.NumFaces) - 1;
+    while (unsure)
+    {
+      const int k = LowestBit(unsure);
+      unsure &= unsure - 1;
+      const double* exact =
+        exactPlanes + 4 * static_cast<vtkIdType>(leafFaces[header.FaceBase + k]);
+      front |= static_cast<std::uint64_t>(FacesLight(exact, exact[3], light)) << k;
+    }
+    const std::uint8_t* pairs = reinterpret_cast<const std::uint8_t*>(planes + 16 * groups);
+    for (std::int32_t i = 0; i < header.NumEdges; ++i)
+    {
+      const std::uint64_t toward = (front >> pairs[2 * i]) & 1;
+      if (toward != ((front >> pairs[2 * i + 1]) & 1))
+      {
+        const std::int32_t edge = header.EdgeBegin + i;
+        Prefetch(edgeOutputs + 3 * static_cast<vtkIdType>(edge));
+        found.push_back(2 * edge + static_cast<std::int32_t>(toward));
+      }
+    }
+    return header.NumEdges;
+  };
+  auto prefetchLeaf = [blocks](std::int32_t first)
+  {
+    // A leaf of n edges has about n faces: the header, 16 n bytes of planes
+    // and 2 n of edges.
+    constexpr int lines = (16 + 18 * LeafSize + 63) / 64;
+    for (int line = 0; line < lines; ++line)
+    {
+      Prefetch(blocks + first + 4 * line);
+    }
+  };
+  auto prefetchNode = [nodes](std::int32_t index)
+  {
+    const char* bytes = reinterpret_cast<const char*>(nodes + index);
+    Prefetch(bytes);
+    Prefetch(bytes + 64);
+    Prefetch(bytes + 128);
   };
 
-  // Visits the subtree under `root` level by level, then tests the edges of
-  // the leaves reached. The walk is bound by memory latency: each level asks
-  // for all the nodes of the next (and the data of every leaf reached) to be
-  // fetched before it looks at any, so that many fetches are in flight
-  // instead of one at a time.
-  const float* leafPlanes = this->LeafPlanes.data();
-  const std::uint8_t* edgeFaces = this->EdgeFaces.data();
-  const std::int32_t* edgeOutputs = this->EdgeOutputs.data();
-  const Node* nodes = this->Nodes.data();
-  struct Lists
-  {
-    std::vector<std::int32_t> Level, Next, Leaves;
-  };
-  auto visit = [&](std::int32_t root, std::vector<std::int32_t>& out, Lists& lists) -> vtkIdType
+  // Visits what lies under one entry (a node, or -1 - a leaf's first block)
+  // level by level, then tests the edges of the leaves reached, then writes
+  // the silhouette edges found. Each level asks for all the nodes of the next
+  // (and all leaves reached) to be fetched before it looks at any, so that
+  // many fetches are in flight instead of one at a time.
+  using Lists = QueryBuffers::Lists;
+  auto visit = [&](std::int32_t entry, std::vector<std::int32_t>& out, Lists& lists) -> vtkIdType
   {
     std::vector<std::int32_t>& level = lists.Level;
     std::vector<std::int32_t>& next = lists.Next;
-    std::vector<std::int32_t>& reached = lists.Leaves;
-    level.assign(1, root);
-    reached.clear();
+    std::vector<std::int32_t>& leaves = lists.Leaves;
+    level.clear();
+    leaves.clear();
+    (entry >= 0 ? level : leaves).push_back(entry >= 0 ? entry : -1 - entry);
     while (!level.empty())
     {
       next.clear();
       for (std::int32_t index : level)
       {
         const Node& node = nodes[index];
-        if (OneSided(node, light, tolerance))
+        for (unsigned mask = VisitMask(node, lightF, tolerance); mask; mask &= mask - 1)
         {
-          continue;
+          const std::int32_t child = node.Child[LowestBit(mask)];
+          if (child >= 0)
+          {
+            prefetchNode(child);
+            next.push_back(child);
+          }
+          else
+          {
+            prefetchLeaf(-1 - child);
+            leaves.push_back(-1 - child);
+          }
         }
-        if (node.Right >= 0)
-        {
-          __builtin_prefetch(nodes + index + 1);
-          __builtin_prefetch(nodes + node.Right);
-          next.push_back(index + 1);
-          next.push_back(node.Right);
-          continue;
-        }
-        // A leaf of n edges has about n faces (16 bytes each), 2 n bytes of
-        // edges and 12 n bytes of outputs.
-        const float* planes = leafPlanes + 4 * static_cast<vtkIdType>(-1 - node.Right);
-        for (std::int32_t i = 0; i < node.End - node.Begin + 4; i += 4)
-        {
-          __builtin_prefetch(planes + 4 * i);
-        }
-        __builtin_prefetch(edgeFaces + 2 * static_cast<vtkIdType>(node.Begin));
-        for (std::int32_t i = node.Begin; i < node.End + 5; i += 5)
-        {
-          __builtin_prefetch(edgeOutputs + 3 * static_cast<vtkIdType>(i));
-        }
-        reached.push_back(index);
       }
       level.swap(next);
     }
     vtkIdType tested = 0;
-    for (std::int32_t leaf : reached)
+    lists.Found.clear();
+    for (std::int32_t first : leaves)
     {
-      const Node& node = nodes[leaf];
-      const std::int32_t first = -1 - node.Right;
-      const float* planes = leafPlanes + 4 * static_cast<vtkIdType>(first);
-      for (std::int32_t i = node.Begin; i < node.End; ++i)
-      {
-        const std::int32_t f0 = edgeFaces[2 * static_cast<vtkIdType>(i)];
-        const std::int32_t f1 = edgeFaces[2 * static_cast<vtkIdType>(i) + 1];
-        const bool toward = front(planes + 4 * f0, first + f0);
-        if (toward != front(planes + 4 * f1, first + f1))
-        {
-          const std::int32_t* edge = edgeOutputs + 3 * static_cast<vtkIdType>(i);
-          out.push_back(edge[0]);
-          out.push_back(edge[toward ? 1 : 2]);
-          out.push_back(edge[toward ? 2 : 1]);
-        }
-      }
-      tested += node.End - node.Begin;
+      tested += testLeaf(first, lists.Found);
+    }
+    for (std::int32_t code : lists.Found)
+    {
+      const std::int32_t* edge = edgeOutputs + 3 * static_cast<vtkIdType>(code >> 1);
+      const bool toward = (code & 1) != 0;
+      out.push_back(edge[0]);
+      out.push_back(edge[toward ? 1 : 2]);
+      out.push_back(edge[toward ? 2 : 1]);
     }
     return tested;
   };
 
+  std::vector<Lists>& entries = buffers.Entries;
   if (this->GetNumberOfEdges() < SerialBelowEdges)
   {
-    Lists lists;
-    return visit(0, silhouette, lists);
+    entries.resize(std::max<std::size_t>(entries.size(), 1));
+    return visit(0, silhouette, entries[0]);
   }
 
-  // The top of the tree, breadth first, until there are enough subtrees to
-  // share among threads; then each subtree as above.
-  std::vector<std::int32_t> queue{ 0 };
-  std::vector<std::int32_t> frontier;
+  // The top of the tree, breadth first, until there are enough subtrees and
+  // leaves to share among threads; then each as above.
+  std::vector<std::int32_t>& queue = buffers.Queue;
+  std::vector<std::int32_t>& frontier = buffers.Frontier;
+  queue.assign(1, 0);
+  frontier.clear();
   std::size_t head = 0;
   while (head < queue.size() && queue.size() - head + frontier.size() < ParallelFrontier)
   {
-    const std::int32_t index = queue[head++];
-    const Node& node = this->Nodes[index];
-    if (OneSided(node, light, tolerance))
+    const Node& node = nodes[queue[head++]];
+    for (unsigned mask = VisitMask(node, lightF, tolerance); mask; mask &= mask - 1)
     {
-      continue;
+      const std::int32_t child = node.Child[LowestBit(mask)];
+      (child >= 0 ? queue : frontier).push_back(child);
     }
-    if (node.Right < 0)
-    {
-      frontier.push_back(index);
-      continue;
-    }
-    queue.push_back(index + 1);
-    queue.push_back(node.Right);
   }
   frontier.insert(frontier.end(), queue.begin() + head, queue.end());
 
-  // One result list a subtree, joined in frontier order: the output order
-  // does not depend on how threads share the subtrees.
-  std::vector<std::vector<std::int32_t>> found(frontier.size());
-  std::vector<vtkIdType> tested(frontier.size(), 0);
-  vtkSMPThreadLocal<Lists> lists;
-  vtkSMPTools::For(0, static_cast<vtkIdType>(frontier.size()), 1,
+  // One result list an entry, joined in frontier order: the output order
+  // does not depend on how threads share the entries.
+  const std::size_t count = frontier.size();
+  entries.resize(std::max(entries.size(), count));
+  std::vector<vtkIdType>& tested = buffers.Tested;
+  tested.assign(count, 0);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(count), 1,
     [&](vtkIdType begin, vtkIdType end)
     {
-      Lists& local = lists.Local();
       for (vtkIdType i = begin; i < end; ++i)
       {
-        tested[i] = visit(frontier[i], found[i], local);
+        entries[i].Out.clear();
+        tested[i] = visit(frontier[i], entries[i].Out, entries[i]);
       }
     });
   vtkIdType total = 0;
-  for (std::size_t i = 0; i < frontier.size(); ++i)
+  for (std::size_t i = 0; i < count; ++i)
   {
     total += tested[i];
-    silhouette.insert(silhouette.end(), found[i].begin(), found[i].end());
+    silhouette.insert(silhouette.end(), entries[i].Out.begin(), entries[i].Out.end());
   }
   return total;
 }

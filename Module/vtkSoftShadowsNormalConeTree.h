@@ -12,23 +12,29 @@
  *                                  d_f = n_f . p, p a corner of the face),
  *
  * by writing it as n_f . (L - w c) - w (d_f - n_f . c) for the node's centre
- * c: the first term is bounded by the node's cone of normals (axis a, half
- * angle t) and the angle between a and L - w c, the second by the range of
- * d_f - n_f . c over the node's faces. When the bounds prove every face of a
- * node toward the light (g > 0) or every face away (g <= 0), none of its edges
- * is a silhouette edge and the node is skipped. Otherwise its children (or, in
- * a leaf, its edges, with the exact test) are visited.
+ * c: the first term lies within |L - w c| r of a . (L - w c), for an axis a
+ * and the radius r of the ball around a that holds the node's normals (the
+ * chord form of a cone of normals: as tight where it matters, at grazing
+ * angles, and free of square roots and trigonometry); the second within the
+ * range of e_f = d_f - n_f . c over the node's faces. When the bounds prove
+ * every face of a node toward the light (g > 0) or every face away (g <= 0),
+ * none of its edges is a silhouette edge and the node is skipped. Otherwise
+ * its children (or, in a leaf, its edges, with the exact test) are visited.
  *
- * The bounds are conservative with a margin far above round-off (see
- * Tolerance()). The leaves decide each face in float, from a copy of its
- * plane stored with the leaf, and fall back to FacesLight() in double, as the
- * brute-force search tests every face, wherever float round-off could change
- * the sign: both searches return the same edges, bit for bit.
+ * The bounds are tested in float with a margin that covers float round-off
+ * many times over (see Tolerance()). The leaves decide each face in float,
+ * from a copy of its plane stored with the leaf, and fall back to
+ * FacesLight() in double, as the brute-force search tests every face,
+ * wherever float round-off could change the sign: both searches return the
+ * same edges, bit for bit.
  *
- * The search is bound by memory latency, not arithmetic: it walks the tree a
- * level at a time, asking for every node of the next level and every leaf's
- * data to be fetched before looking at any, and a leaf reads 16 bytes a face
- * and 2 an edge (ids and points only for silhouette edges).
+ * Made for memory and few instructions, which bound the search: a node holds
+ * its four children's bounds side by side, so that one fetch decides all four
+ * with the same arithmetic lane by lane; a leaf's face planes (four by four)
+ * and its edges' faces lie together, where one run of fetches brings them;
+ * the walk goes a level at a time, asking for every node and leaf of the next
+ * level before looking at any; and ids and points are read only for the
+ * silhouette edges found, after all leaves are tested.
  *
  * Not installed, not wrapped.
  */
@@ -39,7 +45,7 @@
 #include "vtkSoftShadowsLargeBuffers.h" // for RawVector
 #include "vtkType.h"
 
-#include <cstdint> // for std::int32_t, std::uint8_t
+#include <cstdint> // for std::int32_t, INT32_MIN
 #include <vector>  // for std::vector
 
 namespace vtksoftshadows
@@ -75,6 +81,22 @@ public:
     const double* normals, const double* offsets);
 
   /**
+   * Lists a query fills, kept by the caller from one query to the next: fresh
+   * memory is slow to touch (on some virtual machines ~10 us a page, more
+   * than a whole query's arithmetic), reused memory is not.
+   */
+  struct QueryBuffers
+  {
+    struct Lists
+    {
+      std::vector<std::int32_t> Level, Next, Leaves, Found, Out;
+    };
+    std::vector<Lists> Entries; // one a subtree shared among threads
+    std::vector<std::int32_t> Queue, Frontier;
+    std::vector<vtkIdType> Tested;
+  };
+
+  /**
    * Appends the silhouette edges among the tree's edges for the light
    * (x, y, z, w) to `silhouette`, each as its id and its two points, ordered
    * so that the faces lie to the left seen from the light (first point first
@@ -83,47 +105,61 @@ public:
    * exactly. `scale` bounds |p| over the mesh, for the round-off margin.
    * Multi-threaded with vtkSMPTools.
    */
-  vtkIdType Query(const double light[4], double scale, std::vector<std::int32_t>& silhouette) const;
+  vtkIdType Query(const double light[4], double scale, QueryBuffers& buffers,
+    std::vector<std::int32_t>& silhouette) const;
 
   vtkIdType GetNumberOfNodes() const { return static_cast<vtkIdType>(this->Nodes.size()); }
-  vtkIdType GetNumberOfEdges() const
-  {
-    return static_cast<vtkIdType>(this->EdgeOutputs.size() / 3);
-  }
+  vtkIdType GetNumberOfEdges() const { return this->NumberOfEdges; }
 
-  /// Margin that covers the round-off of the bounds against the exact test.
-  static double Tolerance(const double light[4], double scale);
+  /// Margin that covers float round-off of the nodes' bounds (see the .cxx).
+  static float Tolerance(const double light[4], double scale);
 
 private:
-  // 64 bytes, a cache line: the walk is bound by memory, not arithmetic. The
-  // float fields are rounded outward (cosine, offset minimum down; sine,
-  // offset maximum up), so the bounds stay conservative.
+  /// Sentinel of an unused child.
+  static constexpr std::int32_t Empty = INT32_MIN;
+
+  // Four children's bounds, lane by lane (160 bytes). Rounded outward from
+  // double (radius and offset maximum up, offset minimum down), so that the
+  // bounds stay conservative.
   struct Node
   {
-    double Axis[3]; // unit axis of the cone of the faces' normals
-    float Cos;      // at most the cosine of the cone's half angle: smallest Axis . n
-    float Sin;      // at least its sine: largest |Axis x n| (exact for small angles)
-    float Center[3];
-    float OffsetMin; // range of d_f - n_f . Center over the node's faces
-    float OffsetMax;
-    std::int32_t Begin; // the node's edges, Begin .. End - 1 in tree order
-    std::int32_t End;
-    std::int32_t Right; // right child (the left one follows the node); < 0 in a leaf
+    float AxisX[4], AxisY[4], AxisZ[4]; // a: any axis (unit length, near the mean normal)
+    float Radius[4];                    // r >= |n_f - a| for all the child's faces
+    float CenterX[4], CenterY[4], CenterZ[4];
+    float OffsetMin[4]; // range of e_f = d_f - n_f . c over the child's faces
+    float OffsetMax[4];
+    std::int32_t Child[4]; // >= 0 a node; -1 - its first block for a leaf; or Empty
   };
 
-  // True when the bounds prove all of the node's faces on one side of the light.
-  static bool OneSided(const Node& node, const double light[4], double tolerance);
-  struct Builder;
+  // A leaf is a run of blocks in LeafBlocks: a LeafHeader, its faces' float
+  // planes four at a time (n.x of four faces, n.y, n.z, d), then two bytes an
+  // edge, its faces among the leaf's.
+  struct Block
+  {
+    float Values[4];
+  };
+  struct LeafHeader
+  {
+    std::int32_t EdgeBegin; // its edges in tree order, into EdgeOutputs
+    std::int32_t FaceBase;  // its faces' ids, into LeafFaces
+    std::int32_t NumEdges;
+    std::int32_t NumFaces;
+  };
 
-  RawVector<Node> Nodes;
-  // Leaf data, leaf by leaf in tree order (a leaf's Right is -1 minus the
-  // index of its first face in LeafFaces).
-  RawVector<float> LeafPlanes;         // n.x n.y n.z d a leaf's face, rounded to float
-  RawVector<std::int32_t> LeafFaces;   // the face, into Planes
-  RawVector<std::uint8_t> EdgeFaces;   // 2 an edge: its faces among its leaf's
+  // Bits, one a child, of the children not proven one-sided.
+  static unsigned VisitMask(const Node& node, const float light[4], float tolerance);
+  std::int32_t AppendLeaf(const std::int32_t* order, std::int32_t begin, std::int32_t end,
+    const RawVector<Edge>& edges, RawVector<std::int32_t>& local);
+  struct Builder;
+  struct BinaryNode;
+
+  RawVector<Node> Nodes;               // Nodes[0] is the root
+  RawVector<Block> LeafBlocks;         // all leaves, in tree order
+  RawVector<std::int32_t> LeafFaces;   // a leaf's faces, into Planes
   RawVector<std::int32_t> EdgeOutputs; // 3 an edge: id, points as its first face runs it
   RawVector<double> Planes;            // n.x n.y n.z d a face, exact
   double MaxOffset = 0.0;              // largest |d| over the faces
+  vtkIdType NumberOfEdges = 0;
 };
 }
 
