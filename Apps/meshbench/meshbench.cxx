@@ -25,6 +25,7 @@
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -373,47 +374,42 @@ int main(int argc, char* argv[])
     silhouetteEdges += brute->GetNumberOfSilhouetteEdges();
     tested += tree->GetNumberOfTestedEdges();
   }
-  // Each method alone over all the lights in a row, as a smoothie pass would
-  // call it frame after frame: the other's memory traffic no longer evicts
-  // its data between lights.
-  auto inARow = [&](vtkLightSilhouetteFilter* filter)
+  // Each method alone over a list of lights in a row, as a smoothie pass
+  // would call it frame after frame: the other's memory traffic no longer
+  // evicts its data between lights. Lights are (x, y, z, positional).
+  auto inARow = [](vtkLightSilhouetteFilter* filter, const std::vector<glm::dvec4>& sequence)
   {
     std::vector<double> times;
-    for (int i = 0; i < lights; ++i)
+    for (const glm::dvec4& l : sequence)
     {
-      filter->SetLightPosition(positions[i].x, positions[i].y, positions[i].z);
-      filter->SetPositional(i % 2 == 0);
+      filter->SetLightPosition(l.x, l.y, l.z);
+      filter->SetPositional(l.w != 0.0);
       const auto start = Clock::now();
       filter->Update();
       times.push_back(Seconds(start));
     }
     return Median(times);
   };
-  const double bruteRow = inARow(brute);
-  const double treeRow = inARow(tree);
+  std::vector<glm::dvec4> scattered;
+  for (int i = 0; i < lights; ++i)
+  {
+    scattered.emplace_back(positions[i], i % 2 == 0 ? 1.0 : 0.0);
+  }
+  const double bruteRow = inARow(brute, scattered);
+  const double treeRow = inARow(tree, scattered);
   // A light dragged around the mesh, a degree a frame on a tilted circle: a
   // smoothie pass during interaction. Consecutive lights see nearly the same
-  // silhouette, so the tree finds its nodes still in the caches.
-  auto orbit = [&](vtkLightSilhouetteFilter* filter)
+  // silhouette, so the tree may find its nodes still in the caches.
+  std::vector<glm::dvec4> dragged;
+  for (int frame = 0; frame < 180; ++frame)
   {
-    std::vector<double> times;
-    const double pi = 3.14159265358979323846;
-    for (int frame = 0; frame < 180; ++frame)
-    {
-      const double a = pi * frame / 180.0;
-      const glm::dvec3 p = center +
-        3.0 * radius * glm::dvec3(std::cos(a), 0.5 * std::sin(a), std::sin(a)) /
-          std::sqrt(1.0 + 0.25 * std::sin(a) * std::sin(a));
-      filter->SetLightPosition(p.x, p.y, p.z);
-      filter->SetPositional(true);
-      const auto start = Clock::now();
-      filter->Update();
-      times.push_back(Seconds(start));
-    }
-    return Median(times);
-  };
-  const double bruteOrbit = orbit(brute);
-  const double treeOrbit = orbit(tree);
+    const double a = 3.14159265358979323846 * frame / 180.0;
+    const glm::dvec3 offset =
+      glm::normalize(glm::dvec3(std::cos(a), 0.5 * std::sin(a), std::sin(a)));
+    dragged.emplace_back(center + 3.0 * radius * offset, 1.0);
+  }
+  const double bruteOrbit = inARow(brute, dragged);
+  const double treeOrbit = inARow(tree, dragged);
 
   const vtkIdType numEdges = brute->GetNumberOfEdges();
   const double bruteSeconds = Median(bruteTimes);
