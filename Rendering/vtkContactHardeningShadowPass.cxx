@@ -65,7 +65,9 @@ public:
     Resolve;
   // Pass 2's output, one per light of a camera pass.
   std::vector<vtkSmartPointer<vtkTextureObject>> DistanceMaps;
-  // The ping-pong pair of the filtering passes.
+  // The filtering passes' buffers: the prepare pass's target, and the single
+  // Gaussian's intermediate (the multi-pass blur ping-pongs with a distance
+  // map or the receivers' texture instead).
   std::array<vtkSmartPointer<vtkTextureObject>, 2> Maps;
   // Tile classification of a distance map for the prepare pass: per tile,
   // then spread over its neighbourhoods.
@@ -265,9 +267,16 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
   {
     allocate(map, w, h);
   }
-  for (auto& map : in.Maps)
+  allocate(in.Maps[0], w, h);
+  // Only the single Gaussian blurs through a second buffer (rows, then columns).
+  if (this->Variant == Gaussian)
   {
-    allocate(map, w, h);
+    allocate(in.Maps[1], w, h);
+  }
+  else if (in.Maps[1])
+  {
+    in.Maps[1]->ReleaseGraphicsResources(context);
+    in.Maps[1] = nullptr;
   }
   for (auto& map : in.TileMaps)
   {

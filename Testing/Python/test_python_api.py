@@ -79,6 +79,18 @@ for pass_type in (vtkHardShadowPass, vtkReferenceShadowPass, vtkContactHardening
     st.check(visibility_at(0.0, 0.0, 0.0) < 0.05, name + ": ground under the ball is in umbra")
     st.check(visibility_at(2.0, 0.0, 1.0) > 0.95, name + ": open ground is lit")
 
+# One contact pass switched between variants (each keeps only the buffers it
+# needs): the same umbra and lit ground every time.
+contact = vtkContactHardeningShadowPass()
+contact.SetMapSize(512)
+contact.SetShadowOnlyLight(0)
+renderer.SetPass(contact)
+for variant in ("Gaussian", "MultiPass", "PCF", "Gaussian"):
+    getattr(contact, "SetVariantTo" + variant)()
+    window.Render()
+    st.check(visibility_at(0.0, 0.0, 0.0) < 0.05, "contact " + variant + ": umbra under the ball")
+    st.check(visibility_at(2.0, 0.0, 1.0) > 0.95, "contact " + variant + ": open ground is lit")
+
 fence = vtkFenceSource()
 fence.Update()
 st.check(fence.GetOutput().GetNumberOfPolys() > 0, "vtkFenceSource makes triangles")
