@@ -27,6 +27,10 @@ constexpr int SerialDepth = 5;
 // many edges or more.
 constexpr std::size_t ParallelFrontier = 8;
 constexpr vtkIdType SerialBelowEdges = vtkIdType(1) << 14;
+// The leaves reached are then tested in this many runs a thread (for work
+// stealing to even out), of at least this many leaves each.
+constexpr std::size_t SharesPerThread = 4;
+constexpr std::size_t MinimumShare = 64;
 
 glm::dvec3 Vec(const double* v)
 {
@@ -44,6 +48,63 @@ float RoundUp(double value)
   const float f = static_cast<float>(value);
   return static_cast<double>(f) >= value ? f : std::nextafter(f, VTK_FLOAT_MAX);
 }
+
+// A vector a float holds exactly, near v: stored, and v made equal to it (the
+// bounds are then taken against what the query reads).
+void ToFloat(glm::dvec3& v, float out[3])
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    out[c] = static_cast<float>(v[c]);
+    v[c] = out[c];
+  }
+}
+
+#if defined(__GNUC__) || defined(__clang__)
+// Four floats (or ints) in one SIMD register, with the compiler's vector
+// extensions: SSE on x86-64, NEON on ARM. A node's four children are tested
+// at once, lane by lane.
+using Float4 = float __attribute__((vector_size(16)));
+using Int4 = std::int32_t __attribute__((vector_size(16)));
+Float4 Load(const float (&lanes)[4])
+{
+  Float4 v;
+  std::memcpy(&v, lanes, sizeof(v));
+  return v;
+}
+Int4 Load(const std::int32_t (&lanes)[4])
+{
+  Int4 v;
+  std::memcpy(&v, lanes, sizeof(v));
+  return v;
+}
+Float4 Abs(Float4 x)
+{
+  return reinterpret_cast<Float4>(reinterpret_cast<Int4>(x) & 0x7fffffff);
+}
+Float4 Max(Float4 a, Float4 b)
+{
+  return a > b ? a : b;
+}
+Float4 Min(Float4 a, Float4 b)
+{
+  return a < b ? a : b;
+}
+#else
+// Elsewhere one child at a time.
+float Abs(float x)
+{
+  return std::abs(x);
+}
+float Max(float a, float b)
+{
+  return std::max(a, b);
+}
+float Min(float a, float b)
+{
+  return std::min(a, b);
+}
+#endif
 
 // A hint that memory will be read soon; nothing where the compiler has none.
 inline void Prefetch(const void* address)
@@ -76,8 +137,8 @@ inline int LowestBit(std::uint64_t bits)
 // the form a Node keeps for each of its children.
 struct NormalConeTree::BinaryNode
 {
-  float Axis[3];
-  float Radius;
+  float Axis[3], U[3], S[3];
+  float RadiusU, RadiusS, Residual;
   float Center[3];
   float OffsetMin, OffsetMax;
   std::int32_t Begin, End; // its edges, Begin .. End - 1 in tree order
@@ -94,45 +155,86 @@ struct NormalConeTree::Builder
   RawVector<std::int32_t> Order; // the tree's edge order, into Edges
   RawVector<float> Keys;         // 6 an edge: scaled midpoint, mean normal (only to split)
 
-  // The node's axis, radius, centre and offset range, from all faces of its
-  // edges, each rounded to float outward.
+  // The node's normal box (axis, frame, radii), centre and offset range, from
+  // all faces of its edges, each rounded to float outward.
   void Bound(BinaryNode& node) const
   {
+    auto forFaces = [&](auto&& visit)
+    {
+      for (std::int32_t i = node.Begin; i < node.End; ++i)
+      {
+        for (std::int32_t f : this->Edges[this->Order[i]].Faces)
+        {
+          visit(f, Vec(this->Normals + 3 * static_cast<vtkIdType>(f)));
+        }
+      }
+    };
     glm::dvec3 sum(0.0), center(0.0);
+    forFaces([&](std::int32_t, const glm::dvec3& n) { sum += n; });
     for (std::int32_t i = node.Begin; i < node.End; ++i)
     {
-      const Edge& edge = this->Edges[this->Order[i]];
-      sum += Vec(this->Normals + 3 * static_cast<vtkIdType>(edge.Faces[0]));
-      sum += Vec(this->Normals + 3 * static_cast<vtkIdType>(edge.Faces[1]));
       center += Vec(this->Midpoints.data() + 3 * static_cast<vtkIdType>(this->Order[i]));
     }
-    const double length = glm::length(sum);
-    glm::dvec3 axis = length > 0.0 ? sum / length : glm::dvec3(0.0, 0.0, 1.0);
     center /= static_cast<double>(node.End - node.Begin);
-    // Axis and centre may be any vector and point: take ones a float holds
-    // exactly, and bound the faces against those.
-    for (int c = 0; c < 3; ++c)
-    {
-      node.Axis[c] = static_cast<float>(axis[c]);
-      axis[c] = node.Axis[c];
-      node.Center[c] = static_cast<float>(center[c]);
-      center[c] = node.Center[c];
-    }
-    double radius = 0.0;
-    double offsetMin = VTK_DOUBLE_MAX, offsetMax = -VTK_DOUBLE_MAX;
-    for (std::int32_t i = node.Begin; i < node.End; ++i)
-    {
-      const Edge& edge = this->Edges[this->Order[i]];
-      for (std::int32_t f : edge.Faces)
+    const double length = glm::length(sum);
+    const glm::dvec3 t = length > 0.0 ? sum / length : glm::dvec3(0.0, 0.0, 1.0);
+
+    // The frame: u along the normals' widest spread across t (the principal
+    // axis of their tangential deviations), s across both.
+    const glm::dvec3 e1 =
+      glm::normalize(std::abs(t.x) < 0.9 ? glm::cross(t, glm::dvec3(1.0, 0.0, 0.0))
+                                         : glm::cross(t, glm::dvec3(0.0, 1.0, 0.0)));
+    const glm::dvec3 e2 = glm::cross(t, e1);
+    double cxx = 0.0, cxy = 0.0, cyy = 0.0;
+    forFaces(
+      [&](std::int32_t, const glm::dvec3& n)
       {
-        const glm::dvec3 n = Vec(this->Normals + 3 * static_cast<vtkIdType>(f));
-        radius = std::max(radius, glm::length(n - axis));
+        const double x = glm::dot(n, e1), y = glm::dot(n, e2);
+        cxx += x * x;
+        cxy += x * y;
+        cyy += y * y;
+      });
+    const double angle = 0.5 * std::atan2(2.0 * cxy, cxx - cyy);
+    glm::dvec3 u = std::cos(angle) * e1 + std::sin(angle) * e2;
+    glm::dvec3 s = glm::cross(t, u);
+    ToFloat(u, node.U);
+    ToFloat(s, node.S);
+
+    // The box's centre a, then each normal n = a + alpha u + beta s + rest:
+    // exact with the float u, s and a whatever their round-off, so the
+    // radii bound |alpha|, |beta| and |rest| for the vectors the query uses.
+    double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+    double hi[3] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+    forFaces(
+      [&](std::int32_t, const glm::dvec3& n)
+      {
+        const double c[3] = { glm::dot(n, t), glm::dot(n, u), glm::dot(n, s) };
+        for (int k = 0; k < 3; ++k)
+        {
+          lo[k] = std::min(lo[k], c[k]);
+          hi[k] = std::max(hi[k], c[k]);
+        }
+      });
+    glm::dvec3 axis = 0.5 * ((lo[0] + hi[0]) * t + (lo[1] + hi[1]) * u + (lo[2] + hi[2]) * s);
+    ToFloat(axis, node.Axis);
+    ToFloat(center, node.Center);
+    double radiusU = 0.0, radiusS = 0.0, residual = 0.0;
+    double offsetMin = VTK_DOUBLE_MAX, offsetMax = -VTK_DOUBLE_MAX;
+    forFaces(
+      [&](std::int32_t f, const glm::dvec3& n)
+      {
+        const glm::dvec3 d = n - axis;
+        const double alpha = glm::dot(d, u), beta = glm::dot(d, s);
+        radiusU = std::max(radiusU, std::abs(alpha));
+        radiusS = std::max(radiusS, std::abs(beta));
+        residual = std::max(residual, glm::length(d - alpha * u - beta * s));
         const double e = this->Offsets[f] - glm::dot(n, center);
         offsetMin = std::min(offsetMin, e);
         offsetMax = std::max(offsetMax, e);
-      }
-    }
-    node.Radius = RoundUp(radius);
+      });
+    node.RadiusU = RoundUp(radiusU);
+    node.RadiusS = RoundUp(radiusS);
+    node.Residual = RoundUp(residual);
     node.OffsetMin = RoundDown(offsetMin);
     node.OffsetMax = RoundUp(offsetMax);
   }
@@ -399,7 +501,15 @@ void NormalConeTree::Build(const RawVector<Edge>& edges, const RawVector<double>
       node.AxisX[k] = b.Axis[0];
       node.AxisY[k] = b.Axis[1];
       node.AxisZ[k] = b.Axis[2];
-      node.Radius[k] = b.Radius;
+      node.UX[k] = b.U[0];
+      node.UY[k] = b.U[1];
+      node.UZ[k] = b.U[2];
+      node.SX[k] = b.S[0];
+      node.SY[k] = b.S[1];
+      node.SZ[k] = b.S[2];
+      node.RadiusU[k] = b.RadiusU;
+      node.RadiusS[k] = b.RadiusS;
+      node.Residual[k] = b.Residual;
       node.CenterX[k] = b.Center[0];
       node.CenterY[k] = b.Center[1];
       node.CenterZ[k] = b.Center[2];
@@ -492,42 +602,62 @@ std::int32_t NormalConeTree::AppendLeaf(const std::int32_t* order, std::int32_t 
 //------------------------------------------------------------------------------
 float NormalConeTree::Tolerance(const double light[4], double scale)
 {
-  // The float test of a child errs by at most about a dozen units of float
-  // round-off (2^-24) of |L|_1 + |w| 4 scale (|c| <= scale, |e_f| <= 2 scale):
-  // rounding L, forming V = L - w c and a . V, the products with r and the
-  // offsets, and the squares compared. 2^-16 is a margin of over 20 over
-  // that (and of billions over the double round-off of the exact test), and
-  // costs only visits of nodes within 2^-16 of grazing the light.
+  // The float test of a child errs by at most 2^-17.5 B, B = |L|_1 + 2 |w|
+  // scale (|V|_1 <= B as |c| <= scale; |e_f| <= 2 scale): rounding L and
+  // forming V cost 2^-23 B, each of a . V, u . V and s . V 2^-21 B, the
+  // spread (radii <= 2, its terms <= 2 B each) 2^-17.8 B, the margins
+  // toward and away 2^-20.4 B. 2^-14 (|L|_1 + 4 |w| scale) is a margin of
+  // over 10 on that (and of billions over the double round-off of the exact
+  // test), and costs only visits of nodes within 2^-14 of grazing the light.
   const double bound =
     std::abs(light[0]) + std::abs(light[1]) + std::abs(light[2]) + std::abs(light[3]) * 4.0 * scale;
-  return RoundUp(std::ldexp(bound, -16) + 1e-30);
+  return RoundUp(std::ldexp(bound, -14) + 1e-30);
+}
+
+//------------------------------------------------------------------------------
+template <typename Lane>
+auto NormalConeTree::OneSided(const Node& node, const float light[4], float tolerance, Lane lane)
+{
+  // g_f = n_f . V - w e_f with V = L - w c and n_f = a + alpha u + beta s +
+  // rest: n_f . V lies within ru |u . V| + rs |s . V| + rr |V|_1 of a . V
+  // (|V| <= |V|_1, looser only in the small residual's term), and w e_f
+  // within w times the offsets' range. All faces are on one side when the
+  // gap m between a . V - w e and zero exceeds that spread, with m the
+  // larger of the margins toward each side.
+  const auto vx = light[0] - light[3] * lane(node.CenterX);
+  const auto vy = light[1] - light[3] * lane(node.CenterY);
+  const auto vz = light[2] - light[3] * lane(node.CenterZ);
+  const auto av = lane(node.AxisX) * vx + lane(node.AxisY) * vy + lane(node.AxisZ) * vz;
+  const auto uv = lane(node.UX) * vx + lane(node.UY) * vy + lane(node.UZ) * vz;
+  const auto sv = lane(node.SX) * vx + lane(node.SY) * vy + lane(node.SZ) * vz;
+  const auto spread = lane(node.RadiusU) * Abs(uv) + lane(node.RadiusS) * Abs(sv) +
+    lane(node.Residual) * (Abs(vx) + Abs(vy) + Abs(vz));
+  const auto e0 = light[3] * lane(node.OffsetMin);
+  const auto e1 = light[3] * lane(node.OffsetMax);
+  const auto toward = av - Max(e0, e1) - tolerance; // g_f > 0 for all when > spread
+  const auto away = Min(e0, e1) - av - tolerance;   // g_f < 0 for all when > spread
+  return Max(toward, away) > spread;
 }
 
 //------------------------------------------------------------------------------
 unsigned NormalConeTree::VisitMask(const Node& node, const float light[4], float tolerance)
 {
-  // g_f = n_f . V - w e_f with V = L - w c: n_f . V lies within r |V| of
-  // a . V, and w e_f within w times the offsets' range. All faces are on one
-  // side when the gap m between a . V - w e and zero exceeds r |V| (squared:
-  // no square root), with m the larger of the margins toward each side.
+#if defined(__GNUC__) || defined(__clang__)
+  // All four children at once, lane by lane.
+  const Int4 oneSided =
+    OneSided(node, light, tolerance, [](const float(&lanes)[4]) { return Load(lanes); });
+  const Int4 visit = ~oneSided & (Load(node.Child) != Int4{ Empty, Empty, Empty, Empty });
+  return (visit[0] & 1u) | (visit[1] & 2u) | (visit[2] & 4u) | (visit[3] & 8u);
+#else
   unsigned mask = 0;
   for (int k = 0; k < 4; ++k)
   {
-    const float vx = light[0] - light[3] * node.CenterX[k];
-    const float vy = light[1] - light[3] * node.CenterY[k];
-    const float vz = light[2] - light[3] * node.CenterZ[k];
-    const float av = node.AxisX[k] * vx + node.AxisY[k] * vy + node.AxisZ[k] * vz;
-    const float vv = vx * vx + vy * vy + vz * vz;
-    const float e0 = light[3] * node.OffsetMin[k];
-    const float e1 = light[3] * node.OffsetMax[k];
-    const float toward = av - std::max(e0, e1) - tolerance; // g_f > 0 for all when > r |V|
-    const float away = std::min(e0, e1) - av - tolerance;   // g_f < 0 for all when > r |V|
-    const float m = std::max(toward, away);
-    const float r = node.Radius[k];
-    const bool oneSided = m > 0.0f && m * m > r * r * vv;
+    const bool oneSided =
+      OneSided(node, light, tolerance, [k](const float(&lanes)[4]) { return lanes[k]; });
     mask |= static_cast<unsigned>(!oneSided && node.Child[k] != Empty) << k;
   }
   return mask;
+#endif
 }
 
 //------------------------------------------------------------------------------
@@ -613,25 +743,25 @@ vtkIdType NormalConeTree::Query(const double light[4], double scale, QueryBuffer
   auto prefetchNode = [nodes](std::int32_t index)
   {
     const char* bytes = reinterpret_cast<const char*>(nodes + index);
-    Prefetch(bytes);
-    Prefetch(bytes + 64);
-    Prefetch(bytes + 128);
+    for (std::size_t offset = 0; offset < sizeof(Node); offset += 64)
+    {
+      Prefetch(bytes + offset);
+    }
+    Prefetch(bytes + sizeof(Node) - 1);
   };
 
-  // Visits what lies under one entry (a node, or -1 - a leaf's first block)
-  // level by level, then tests the edges of the leaves reached, then writes
-  // the silhouette edges found. Each level asks for all the nodes of the next
-  // (and all leaves reached) to be fetched before it looks at any, so that
-  // many fetches are in flight instead of one at a time.
-  using Lists = QueryBuffers::Lists;
-  auto visit = [&](std::int32_t entry, std::vector<std::int32_t>& out, Lists& lists) -> vtkIdType
+  // Walks what lies under one entry (a node, or -1 - a leaf's first block)
+  // level by level, listing the leaves reached in tree order. Each level asks
+  // for all the nodes of the next to be fetched before it looks at any, so
+  // that many fetches are in flight instead of one at a time.
+  using Walk = QueryBuffers::Walk;
+  auto walk = [&](std::int32_t entry, Walk& lists)
   {
     std::vector<std::int32_t>& level = lists.Level;
     std::vector<std::int32_t>& next = lists.Next;
-    std::vector<std::int32_t>& leaves = lists.Leaves;
     level.clear();
-    leaves.clear();
-    (entry >= 0 ? level : leaves).push_back(entry >= 0 ? entry : -1 - entry);
+    lists.Leaves.clear();
+    (entry >= 0 ? level : lists.Leaves).push_back(entry >= 0 ? entry : -1 - entry);
     while (!level.empty())
     {
       next.clear();
@@ -648,39 +778,59 @@ vtkIdType NormalConeTree::Query(const double light[4], double scale, QueryBuffer
           }
           else
           {
-            prefetchLeaf(-1 - child);
-            leaves.push_back(-1 - child);
+            lists.Leaves.push_back(-1 - child);
           }
         }
       }
       level.swap(next);
     }
-    vtkIdType tested = 0;
-    lists.Found.clear();
-    for (std::int32_t first : leaves)
+  };
+
+  // Tests a run of reached leaves, fetching a few ahead, then writes the
+  // silhouette edges found.
+  using Share = QueryBuffers::Share;
+  auto test = [&](const std::int32_t* leaves, std::size_t count, Share& share)
+  {
+    constexpr std::size_t ahead = 8;
+    for (std::size_t i = 0; i < std::min(ahead, count); ++i)
     {
-      tested += testLeaf(first, lists.Found);
+      prefetchLeaf(leaves[i]);
     }
-    for (std::int32_t code : lists.Found)
+    share.Tested = 0;
+    share.Found.clear();
+    share.Out.clear();
+    for (std::size_t i = 0; i < count; ++i)
+    {
+      if (i + ahead < count)
+      {
+        prefetchLeaf(leaves[i + ahead]);
+      }
+      share.Tested += testLeaf(leaves[i], share.Found);
+    }
+    for (std::int32_t code : share.Found)
     {
       const std::int32_t* edge = edgeOutputs + 3 * static_cast<vtkIdType>(code >> 1);
       const bool toward = (code & 1) != 0;
-      out.push_back(edge[0]);
-      out.push_back(edge[toward ? 1 : 2]);
-      out.push_back(edge[toward ? 2 : 1]);
+      share.Out.push_back(edge[0]);
+      share.Out.push_back(edge[toward ? 1 : 2]);
+      share.Out.push_back(edge[toward ? 2 : 1]);
     }
-    return tested;
   };
 
-  std::vector<Lists>& entries = buffers.Entries;
+  std::vector<Walk>& walks = buffers.Walks;
+  std::vector<Share>& shares = buffers.Shares;
   if (this->GetNumberOfEdges() < SerialBelowEdges)
   {
-    entries.resize(std::max<std::size_t>(entries.size(), 1));
-    return visit(0, silhouette, entries[0]);
+    walks.resize(std::max<std::size_t>(walks.size(), 1));
+    shares.resize(std::max<std::size_t>(shares.size(), 1));
+    walk(0, walks[0]);
+    test(walks[0].Leaves.data(), walks[0].Leaves.size(), shares[0]);
+    silhouette.insert(silhouette.end(), shares[0].Out.begin(), shares[0].Out.end());
+    return shares[0].Tested;
   }
 
   // The top of the tree, breadth first, until there are enough subtrees and
-  // leaves to share among threads; then each as above.
+  // leaves to share among threads; then each subtree's walk.
   std::vector<std::int32_t>& queue = buffers.Queue;
   std::vector<std::int32_t>& frontier = buffers.Frontier;
   queue.assign(1, 0);
@@ -696,28 +846,48 @@ vtkIdType NormalConeTree::Query(const double light[4], double scale, QueryBuffer
     }
   }
   frontier.insert(frontier.end(), queue.begin() + head, queue.end());
-
-  // One result list an entry, joined in frontier order: the output order
-  // does not depend on how threads share the entries.
-  const std::size_t count = frontier.size();
-  entries.resize(std::max(entries.size(), count));
-  std::vector<vtkIdType>& tested = buffers.Tested;
-  tested.assign(count, 0);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(count), 1,
+  const std::size_t numWalks = frontier.size();
+  walks.resize(std::max(walks.size(), numWalks));
+  vtkSMPTools::For(0, static_cast<vtkIdType>(numWalks), 1,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType i = begin; i < end; ++i)
       {
-        entries[i].Out.clear();
-        tested[i] = visit(frontier[i], entries[i].Out, entries[i]);
+        walk(frontier[i], walks[i]);
       }
     });
-  vtkIdType total = 0;
-  for (std::size_t i = 0; i < count; ++i)
+
+  // The leaves reached, in frontier order, shared among threads in equal
+  // runs: subtrees reach very different numbers of leaves (one may hold a
+  // third of the silhouette), runs of leaves cost about the same.
+  std::vector<std::int32_t>& reached = buffers.Reached;
+  reached.clear();
+  for (std::size_t i = 0; i < numWalks; ++i)
   {
-    total += tested[i];
-    silhouette.insert(silhouette.end(), entries[i].Out.begin(), entries[i].Out.end());
+    reached.insert(reached.end(), walks[i].Leaves.begin(), walks[i].Leaves.end());
   }
-  return total;
+  const std::size_t numShares = std::min<std::size_t>(
+    SharesPerThread * static_cast<std::size_t>(vtkSMPTools::GetEstimatedNumberOfThreads()),
+    reached.size() / MinimumShare + 1);
+  shares.resize(std::max(shares.size(), numShares));
+  vtkSMPTools::For(0, static_cast<vtkIdType>(numShares), 1,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const std::size_t first = reached.size() * i / numShares;
+        const std::size_t last = reached.size() * (i + 1) / numShares;
+        test(reached.data() + first, last - first, shares[i]);
+      }
+    });
+
+  // Joined in order: the output does not depend on how threads share the work.
+  vtkIdType tested = 0;
+  for (std::size_t i = 0; i < numShares; ++i)
+  {
+    tested += shares[i].Tested;
+    silhouette.insert(silhouette.end(), shares[i].Out.begin(), shares[i].Out.end());
+  }
+  return tested;
 }
 }
