@@ -35,11 +35,13 @@
  *
  * Made for memory and few instructions, which bound the search: a node holds
  * its four children's bounds side by side, so that one fetch decides all four
- * with the same arithmetic, in one SIMD register lane by lane; a leaf's face planes (four by four)
- * and its edges' faces lie together, where one run of fetches brings them;
- * the walk goes a level at a time, asking for every node and leaf of the next
- * level before looking at any; and ids and points are read only for the
- * silhouette edges found, after all leaves are tested.
+ * with the same arithmetic, in one SIMD register lane by lane; a leaf's face
+ * planes (four by four, tested four at once) and its edges' faces lie
+ * together, where one run of fetches brings them; the walk goes a level at a
+ * time, asking for every node of the next level before looking at any; the
+ * leaves reached are then tested in equal shares among threads, fetched a few
+ * ahead; and ids and points are read only for the silhouette edges found,
+ * after all leaves are tested.
  *
  * Not installed, not wrapped.
  */
