@@ -739,7 +739,9 @@ vtkIdType NormalConeTree::Query(const double light[4], double scale, QueryBuffer
 #endif
     }
     // Faces past the last (zero planes in the last group) are no faces.
-    unsure &= header.NumFaces == 64 ? ~std::uint64_t(0) : (std::uint64_t(1) << header.NumFaces) - 1;
+    const std::uint64_t faces =
+      header.NumFaces == 64 ? ~std::uint64_t(0) : (std::uint64_t(1) << header.NumFaces) - 1;
+    unsure &= faces;
     while (unsure)
     {
       const int k = LowestBit(unsure);
@@ -747,6 +749,12 @@ vtkIdType NormalConeTree::Query(const double light[4], double scale, QueryBuffer
       const double* exact =
         exactPlanes + 4 * static_cast<vtkIdType>(leafFaces[header.FaceBase + k]);
       front |= static_cast<std::uint64_t>(FacesLight(exact, exact[3], light)) << k;
+    }
+    // All faces on one side (a fifth of the leaves the bounds let through):
+    // no edge to look at.
+    if ((front & faces) == 0 || (front & faces) == faces)
+    {
+      return header.NumEdges;
     }
     const std::uint8_t* pairs = reinterpret_cast<const std::uint8_t*>(planes + 16 * groups);
     for (std::int32_t i = 0; i < header.NumEdges; ++i)
