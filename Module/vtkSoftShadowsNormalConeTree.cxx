@@ -757,15 +757,25 @@ vtkIdType NormalConeTree::Query(const double light[4], double scale, QueryBuffer
       return header.NumEdges;
     }
     const std::uint8_t* pairs = reinterpret_cast<const std::uint8_t*>(planes + 16 * groups);
+    // Without branches: near the silhouette whether an edge is on it is a
+    // coin toss, which a branch predictor cannot learn. Every edge is written
+    // and only the silhouette ones are kept.
+    const std::size_t count = found.size();
+    found.resize(count + header.NumEdges);
+    std::int32_t* out = found.data() + count;
     for (std::int32_t i = 0; i < header.NumEdges; ++i)
     {
       const std::uint64_t toward = (front >> pairs[2 * i]) & 1;
-      if (toward != ((front >> pairs[2 * i + 1]) & 1))
-      {
-        const std::int32_t edge = header.EdgeBegin + i;
-        Prefetch(edgeOutputs + 3 * static_cast<vtkIdType>(edge));
-        found.push_back(2 * edge + static_cast<std::int32_t>(toward));
-      }
+      const std::uint64_t away = ~(front >> pairs[2 * i + 1]) & 1;
+      *out = 2 * (header.EdgeBegin + i) + static_cast<std::int32_t>(toward);
+      out += toward ^ away ^ 1;
+    }
+    found.resize(out - found.data());
+    // Their ids and points, for later.
+    const std::int32_t* outputs = edgeOutputs + 3 * static_cast<vtkIdType>(header.EdgeBegin);
+    for (std::int32_t value = 0; value < 3 * header.NumEdges; value += 16)
+    {
+      Prefetch(outputs + value);
     }
     return header.NumEdges;
   };
