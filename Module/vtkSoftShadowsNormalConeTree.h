@@ -19,7 +19,8 @@
  * within ru |u . V| + rs |s . V| + rr |V| of a . V (V = L - w c). Normals of
  * a patch spread unevenly (a tube's turn faster around it than along it):
  * on meshbench's knot a ball holding them (the chord form of a normal cone)
- * reached 1.77 leaves for each leaf with a silhouette edge, the box 1.26.
+ * reached 1.77 leaves for each leaf with a silhouette edge, the box 1.26
+ * (leaves of 8 to 16 edges).
  * The second term lies within the range of e_f = d_f - n_f . c over the
  * node's faces. When the bounds prove
  * every face of a node toward the light (g > 0) or every face away (g <= 0),
