@@ -20,12 +20,11 @@
  * a patch spread unevenly (a tube's turn faster around it than along it):
  * on meshbench's knot a ball holding them (the chord form of a normal cone)
  * reached 1.77 leaves for each leaf with a silhouette edge, the box 1.26
- * (leaves of 8 to 16 edges).
- * The second term lies within the range of e_f = d_f - n_f . c over the
- * node's faces. When the bounds prove
- * every face of a node toward the light (g > 0) or every face away (g <= 0),
- * none of its edges is a silhouette edge and the node is skipped. Otherwise
- * its children (or, in a leaf, its edges, with the exact test) are visited.
+ * (leaves of 8 to 16 edges). The second term lies within the range of
+ * e_f = d_f - n_f . c over the node's faces. When the bounds prove every
+ * face of a node toward the light (g > 0) or every face away (g <= 0), none
+ * of its edges is a silhouette edge and the node is skipped. Otherwise its
+ * children (or, in a leaf, its edges, with the exact test) are visited.
  *
  * The bounds are tested in float with a margin that covers float round-off
  * many times over (see Tolerance()). The leaves decide each face in float,
