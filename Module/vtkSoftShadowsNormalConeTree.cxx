@@ -79,16 +79,10 @@ Float4 Load4(const float* values)
   std::memcpy(&v, values, sizeof(v));
   return v;
 }
-Float4 Load(const float (&lanes)[4])
-{
-  Float4 v;
-  std::memcpy(&v, lanes, sizeof(v));
-  return v;
-}
-Int4 Load(const std::int32_t (&lanes)[4])
+Int4 Load4(const std::int32_t* values)
 {
   Int4 v;
-  std::memcpy(&v, lanes, sizeof(v));
+  std::memcpy(&v, values, sizeof(v));
   return v;
 }
 // The lanes' sign bits, four bits (one instruction with SSE).
@@ -668,8 +662,8 @@ inline unsigned NormalConeTree::VisitMask(const Node& node, const float light[4]
 #if defined(__GNUC__) || defined(__clang__)
   // All four children at once, lane by lane.
   const Int4 oneSided =
-    OneSided(node, light, tolerance, [](const float(&lanes)[4]) { return Load(lanes); });
-  const Int4 visit = ~oneSided & (Load(node.Child) != Int4{ Empty, Empty, Empty, Empty });
+    OneSided(node, light, tolerance, [](const float(&lanes)[4]) { return Load4(lanes); });
+  const Int4 visit = ~oneSided & (Load4(node.Child) != Int4{ Empty, Empty, Empty, Empty });
   return Bits(visit);
 #else
   unsigned mask = 0;
