@@ -296,7 +296,16 @@ int vtkLightSilhouetteFilter::RequestData(
           }
         }
       });
-    internals.Tree.Build(edges, midpoints, normals, internals.Offsets.data());
+    // A ball holding the mesh, for the tree's local frame.
+    double bounds[6];
+    input->GetPoints()->GetBounds(bounds);
+    const double origin[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+      0.5 * (bounds[4] + bounds[5]) };
+    const double radius = 0.5 *
+      std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+        (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
+        (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+    internals.Tree.Build(edges, midpoints, normals, internals.Offsets.data(), origin, radius);
     internals.TreeBuilt = true;
     built = true;
   }
@@ -339,8 +348,7 @@ int vtkLightSilhouetteFilter::RequestData(
   }
   else
   {
-    this->NumberOfTestedEdges =
-      internals.Tree.Query(light, internals.Mesh.MaxPointNorm, internals.TreeBuffers, silhouette);
+    this->NumberOfTestedEdges = internals.Tree.Query(light, internals.TreeBuffers, silhouette);
     auto front = [&](std::int32_t face) { return internals.FaceFront(face, light); };
     const auto& irregular = internals.Irregular;
     TestInBlocks(

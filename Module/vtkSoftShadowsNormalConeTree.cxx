@@ -167,7 +167,8 @@ struct NormalConeTree::Builder
   const RawVector<Edge>& Edges;
   const RawVector<double>& Midpoints;
   const double* Normals;
-  const double* Offsets;
+  const double* Offsets; // relative to Origin
+  glm::dvec3 Origin;
   RawVector<std::int32_t> Order; // the tree's edge order, into Edges
   RawVector<float> Keys;         // 6 an edge: scaled midpoint, mean normal (only to split)
 
@@ -191,7 +192,7 @@ struct NormalConeTree::Builder
     {
       center += Vec(this->Midpoints.data() + 3 * static_cast<vtkIdType>(this->Order[i]));
     }
-    center /= static_cast<double>(node.End - node.Begin);
+    center = center / static_cast<double>(node.End - node.Begin) - this->Origin;
     const double length = glm::length(sum);
     const glm::dvec3 t = length > 0.0 ? sum / length : glm::dvec3(0.0, 0.0, 1.0);
 
@@ -312,8 +313,10 @@ struct NormalConeTree::Builder
 
 //------------------------------------------------------------------------------
 void NormalConeTree::Build(const RawVector<Edge>& edges, const RawVector<double>& midpoints,
-  const double* normals, const double* offsets)
+  const double* normals, const double* offsets, const double origin[3], double radius)
 {
+  std::copy_n(origin, 3, this->Origin);
+  this->Radius = radius;
   this->Nodes.clear();
   this->LeafBlocks.clear();
   this->LeafFaces.clear();
@@ -325,7 +328,22 @@ void NormalConeTree::Build(const RawVector<Edge>& edges, const RawVector<double>
   {
     return;
   }
-  Builder builder{ edges, midpoints, normals, offsets, {}, {} };
+  // The planes relative to the origin: d' = d - n . origin.
+  std::int32_t maxFace = 0;
+  for (const Edge& edge : edges)
+  {
+    maxFace = std::max({ maxFace, edge.Faces[0], edge.Faces[1] });
+  }
+  const std::size_t numFaces = static_cast<std::size_t>(maxFace) + 1;
+  RawVector<double> localOffsets(numFaces);
+  this->MaxOffset = this->MaxLocalOffset = 0.0;
+  for (std::size_t f = 0; f < numFaces; ++f)
+  {
+    localOffsets[f] = offsets[f] - glm::dot(Vec(normals + 3 * f), Vec(origin));
+    this->MaxOffset = std::max(this->MaxOffset, std::abs(offsets[f]));
+    this->MaxLocalOffset = std::max(this->MaxLocalOffset, std::abs(localOffsets[f]));
+  }
+  Builder builder{ edges, midpoints, normals, localOffsets.data(), Vec(origin), {}, {} };
   builder.Order.resize(numEdges);
   builder.Keys.resize(6 * numEdges);
 
@@ -449,19 +467,11 @@ void NormalConeTree::Build(const RawVector<Edge>& edges, const RawVector<double>
   }
 
   // The exact planes, for the rare faces the float test cannot decide.
-  std::int32_t maxFace = 0;
-  for (const Edge& edge : edges)
-  {
-    maxFace = std::max({ maxFace, edge.Faces[0], edge.Faces[1] });
-  }
-  const std::size_t numFaces = static_cast<std::size_t>(maxFace) + 1;
   this->Planes.resize(4 * numFaces);
-  this->MaxOffset = 0.0;
   for (std::size_t f = 0; f < numFaces; ++f)
   {
     std::copy_n(normals + 3 * f, 3, this->Planes.data() + 4 * f);
     this->Planes[4 * f + 3] = offsets[f];
-    this->MaxOffset = std::max(this->MaxOffset, std::abs(offsets[f]));
   }
 
   // The binary tree collapsed into nodes of up to four children: a node's
@@ -538,7 +548,8 @@ void NormalConeTree::Build(const RawVector<Edge>& edges, const RawVector<double>
       }
       else
       {
-        node.Child[k] = -1 - this->AppendLeaf(builder.Order.data(), b.Begin, b.End, edges, local);
+        node.Child[k] =
+          -1 - this->AppendLeaf(builder.Order.data(), b.Begin, b.End, edges, localOffsets, local);
       }
     }
     this->Nodes[index] = node;
@@ -558,7 +569,8 @@ void NormalConeTree::Build(const RawVector<Edge>& edges, const RawVector<double>
 
 //------------------------------------------------------------------------------
 std::int32_t NormalConeTree::AppendLeaf(const std::int32_t* order, std::int32_t begin,
-  std::int32_t end, const RawVector<Edge>& edges, RawVector<std::int32_t>& local)
+  std::int32_t end, const RawVector<Edge>& edges, const RawVector<double>& localOffsets,
+  RawVector<std::int32_t>& local)
 {
   const std::int32_t first = static_cast<std::int32_t>(this->LeafBlocks.size());
   LeafHeader header;
@@ -593,11 +605,12 @@ std::int32_t NormalConeTree::AppendLeaf(const std::int32_t* order, std::int32_t 
     Block planes[4] = {};
     for (std::int32_t k = 0; k < 4 && group + k < header.NumFaces; ++k)
     {
-      const double* plane = this->Planes.data() + 4 * this->LeafFaces[header.FaceBase + group + k];
-      for (int c = 0; c < 4; ++c)
+      const std::int32_t face = this->LeafFaces[header.FaceBase + group + k];
+      for (int c = 0; c < 3; ++c)
       {
-        planes[c].Values[k] = static_cast<float>(plane[c]);
+        planes[c].Values[k] = static_cast<float>(this->Planes[4 * face + c]);
       }
+      planes[3].Values[k] = static_cast<float>(localOffsets[face]);
     }
     this->LeafBlocks.insert(this->LeafBlocks.end(), planes, planes + 4);
   }
@@ -616,18 +629,18 @@ std::int32_t NormalConeTree::AppendLeaf(const std::int32_t* order, std::int32_t 
 }
 
 //------------------------------------------------------------------------------
-float NormalConeTree::Tolerance(const double light[4], double scale)
+float NormalConeTree::Tolerance(const double local[4], double exact) const
 {
   // The float test of a child errs by at most 2^-17.5 B, B = |L|_1 + 2 |w|
-  // scale (|V|_1 <= B as |c| <= scale; |e_f| <= 2 scale): rounding L and
-  // forming V cost 2^-23 B, each of a . V, u . V and s . V 2^-21 B, the
-  // spread (radii <= 2, its terms <= 2 B each) 2^-17.8 B, the margins
-  // toward and away 2^-20.4 B. 2^-14 (|L|_1 + 4 |w| scale) is a margin of
-  // over 10 on that (and of billions over the double round-off of the exact
-  // test), and costs only visits of nodes within 2^-14 of grazing the light.
-  const double bound =
-    std::abs(light[0]) + std::abs(light[1]) + std::abs(light[2]) + std::abs(light[3]) * 4.0 * scale;
-  return RoundUp(std::ldexp(bound, -14) + 1e-30);
+  // R for the light L relative to the origin and the radius R around it
+  // (|V|_1 <= B as |c| <= R; |e_f| <= 2 R): rounding L and forming V cost
+  // 2^-23 B, each of a . V, u . V and s . V 2^-21 B, the spread (radii <= 2,
+  // its terms <= 2 B each) 2^-17.8 B, the margins toward and away 2^-20.4 B.
+  // 2^-14 (|L|_1 + 4 |w| R) is a margin of over 10 on that, and costs only
+  // visits of nodes within 2^-14 of grazing the light.
+  const double bound = std::abs(local[0]) + std::abs(local[1]) + std::abs(local[2]) +
+    std::abs(local[3]) * 4.0 * this->Radius;
+  return RoundUp(std::ldexp(bound, -14) + exact + 1e-30);
 }
 
 //------------------------------------------------------------------------------
@@ -678,27 +691,44 @@ inline unsigned NormalConeTree::VisitMask(const Node& node, const float light[4]
 }
 
 //------------------------------------------------------------------------------
-vtkIdType NormalConeTree::Query(const double light[4], double scale, QueryBuffers& buffers,
-  std::vector<std::int32_t>& silhouette) const
+vtkIdType NormalConeTree::Query(
+  const double light[4], QueryBuffers& buffers, std::vector<std::int32_t>& silhouette) const
 {
   if (this->Nodes.empty())
   {
     return 0;
   }
-  const float tolerance = Tolerance(light, scale);
-  const float lightF[4] = { static_cast<float>(light[0]), static_cast<float>(light[1]),
-    static_cast<float>(light[2]), static_cast<float>(light[3]) };
+  // The light relative to the origin, as the float bounds and planes are:
+  // n . L - w d = n . (L - w origin) - w (d - n . origin).
+  const double local[4] = { light[0] - light[3] * this->Origin[0],
+    light[1] - light[3] * this->Origin[1], light[2] - light[3] * this->Origin[2], light[3] };
+  const float lightF[4] = { static_cast<float>(local[0]), static_cast<float>(local[1]),
+    static_cast<float>(local[2]), static_cast<float>(local[3]) };
+
+  // The exact test, FacesLight() in double with the input's own planes and
+  // light, errs by a few units of double round-off (2^-53) of |L|_1 + |w|
+  // max |d|; the local light, the local planes and the bounds' offsets carry
+  // as much again from subtracting the origin: under 16 units of |L|_1 + |w|
+  // (max |d| + |origin|_1) all told. Far from (0, 0, 0) that can exceed the
+  // float round-off of a small mesh, so every float decision keeps 2^-44 of
+  // it, 32 times as much, as a further margin.
+  const double exact = std::ldexp(std::abs(light[0]) + std::abs(light[1]) + std::abs(light[2]) +
+      std::abs(light[3]) *
+        (this->MaxOffset + std::abs(this->Origin[0]) + std::abs(this->Origin[1]) +
+          std::abs(this->Origin[2])),
+    -44);
+  const float tolerance = this->Tolerance(local, exact);
 
   // Which side of the light a face is on: in float, and again in double, as
   // the brute-force search does, only where the float result is within its
-  // round-off bound of zero. Each float product and sum errs by at most 2^-24
+  // error bound of zero. Each float product and sum errs by at most 2^-24
   // times the sum of the terms' magnitudes (and rounding n, d and L to float
   // by as much again): 7 such errors at most; 16 leaves a margin. Both
   // searches therefore take the same decision for every face.
-  const float bound = static_cast<float>(16.0 * std::ldexp(1.0, -24) *
-      (std::abs(light[0]) + std::abs(light[1]) + std::abs(light[2]) +
-        std::abs(light[3]) * this->MaxOffset) +
-    1e-30);
+  const float bound = RoundUp(16.0 * std::ldexp(1.0, -24) *
+      (std::abs(local[0]) + std::abs(local[1]) + std::abs(local[2]) +
+        std::abs(local[3]) * this->MaxLocalOffset) +
+    exact + 1e-30);
   const Node* nodes = this->Nodes.data();
   const Block* blocks = this->LeafBlocks.data();
   const std::int32_t* leafFaces = this->LeafFaces.data();

@@ -81,11 +81,13 @@ public:
   /**
    * Builds the tree over `edges`, given every face's unit normal (3 a face)
    * and plane offset, and each edge's midpoint (3 an edge, in the order of
-   * `edges`). The tree keeps its own copy of the planes of the faces it uses,
-   * and each leaf a float copy of its faces' planes.
+   * `edges`); `origin` and `radius` are a ball holding every point of the
+   * mesh. The tree keeps its own copy of the planes of the faces it uses,
+   * and its float bounds and planes relative to `origin`: their round-off
+   * then follows the mesh's size, not its distance from (0, 0, 0).
    */
   void Build(const RawVector<Edge>& edges, const RawVector<double>& midpoints,
-    const double* normals, const double* offsets);
+    const double* normals, const double* offsets, const double origin[3], double radius);
 
   /**
    * Lists a query fills, kept by the caller from one query to the next: fresh
@@ -114,17 +116,20 @@ public:
    * so that the faces lie to the left seen from the light (first point first
    * when the edge's first face faces the light). The order is the tree's,
    * whatever the number of threads. Returns how many edges were tested
-   * exactly. `scale` bounds |p| over the mesh, for the round-off margin.
-   * Multi-threaded with vtkSMPTools.
+   * exactly. Multi-threaded with vtkSMPTools.
    */
-  vtkIdType Query(const double light[4], double scale, QueryBuffers& buffers,
-    std::vector<std::int32_t>& silhouette) const;
+  vtkIdType Query(
+    const double light[4], QueryBuffers& buffers, std::vector<std::int32_t>& silhouette) const;
 
   vtkIdType GetNumberOfNodes() const { return static_cast<vtkIdType>(this->Nodes.size()); }
   vtkIdType GetNumberOfEdges() const { return this->NumberOfEdges; }
 
-  /// Margin that covers float round-off of the nodes' bounds (see the .cxx).
-  static float Tolerance(const double light[4], double scale);
+  /**
+   * Margin that covers float round-off of the nodes' bounds for the light
+   * `local` (relative to the origin), plus `exact`, the bound on the exact
+   * test's own round-off (see the .cxx).
+   */
+  float Tolerance(const double local[4], double exact) const;
 
 private:
   /// Sentinel of an unused child.
@@ -168,16 +173,20 @@ private:
   template <typename Lane>
   static auto OneSided(const Node& node, const float light[4], float tolerance, Lane lane);
   std::int32_t AppendLeaf(const std::int32_t* order, std::int32_t begin, std::int32_t end,
-    const RawVector<Edge>& edges, RawVector<std::int32_t>& local);
+    const RawVector<Edge>& edges, const RawVector<double>& localOffsets,
+    RawVector<std::int32_t>& local);
   struct Builder;
   struct BinaryNode;
 
-  RawVector<Node> Nodes;               // Nodes[0] is the root
-  RawVector<Block> LeafBlocks;         // all leaves, in tree order
-  RawVector<std::int32_t> LeafFaces;   // a leaf's faces, into Planes
-  RawVector<std::int32_t> EdgeOutputs; // 3 an edge: id, points as its first face runs it
-  RawVector<double> Planes;            // n.x n.y n.z d a face, exact
-  double MaxOffset = 0.0;              // largest |d| over the faces
+  RawVector<Node> Nodes;                // Nodes[0] is the root
+  RawVector<Block> LeafBlocks;          // all leaves, in tree order
+  RawVector<std::int32_t> LeafFaces;    // a leaf's faces, into Planes
+  RawVector<std::int32_t> EdgeOutputs;  // 3 an edge: id, points as its first face runs it
+  RawVector<double> Planes;             // n.x n.y n.z d a face, exact
+  double Origin[3] = { 0.0, 0.0, 0.0 }; // the float bounds and planes are relative to it
+  double Radius = 0.0;                  // |p - Origin| <= Radius for every point p
+  double MaxOffset = 0.0;               // largest |d| over the faces
+  double MaxLocalOffset = 0.0;          // largest |d - n . Origin| over the faces
   vtkIdType NumberOfEdges = 0;
 };
 }

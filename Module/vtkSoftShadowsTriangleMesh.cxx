@@ -9,7 +9,6 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolygon.h"
-#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 
 #include <algorithm> // for std::max, std::swap
@@ -21,32 +20,26 @@ namespace vtksoftshadows
 {
 namespace
 {
-// Finds the first non-finite point and the largest |p|.
+// Finds the first non-finite point.
 struct CheckPoints
 {
-  // The exemplar matters: a default-constructed vtkSMPThreadLocal<double>
-  // leaves its values uninitialized with the Sequential backend.
   CheckPoints(const TriangleMesh& mesh, vtkIdType numPoints)
     : Mesh(mesh)
     , FirstBad(numPoints)
-    , MaxNorm2(0.0)
   {
   }
 
   const TriangleMesh& Mesh;
   std::atomic<vtkIdType> FirstBad;
-  vtkSMPThreadLocal<double> MaxNorm2;
 
   template <typename T>
   void Check(const T* x, vtkIdType begin, vtkIdType end)
   {
-    double& maxNorm2 = this->MaxNorm2.Local();
     for (vtkIdType i = begin; i < end; ++i)
     {
       const double p[3] = { double(x[3 * i]), double(x[3 * i + 1]), double(x[3 * i + 2]) };
       if (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))
       {
-        maxNorm2 = std::max(maxNorm2, p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
         continue;
       }
       vtkIdType bad = this->FirstBad.load();
@@ -311,12 +304,6 @@ bool ExtractTriangles(vtkPolyData* input, vtkAlgorithm* filter, TriangleMesh& me
     mesh = TriangleMesh();
     return false;
   }
-  double maxNorm2 = 0.0;
-  for (double value : check.MaxNorm2)
-  {
-    maxNorm2 = std::max(maxNorm2, value);
-  }
-  mesh.MaxPointNorm = std::sqrt(maxNorm2);
 
   if (numVerts > 0 || numLines > 0)
   {

@@ -47,8 +47,6 @@ struct TriangleMesh
   const double* DoublePoints = nullptr;
   std::vector<double> ConvertedPoints; // other point types, converted
   vtkIdType NumberOfPoints = 0;
-  /// Largest |p| over the input points: the scale of round-off in plane tests.
-  double MaxPointNorm = 0.0;
 
   /// Three point ids a face, in the input's winding.
   RawVector<std::int32_t> Triangles;

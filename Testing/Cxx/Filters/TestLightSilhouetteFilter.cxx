@@ -10,6 +10,7 @@
 #include "vtkFenceSource.h"
 #include "vtkLight.h"
 #include "vtkLightSilhouetteFilter.h"
+#include "vtkSphereSource.h"
 #include "vtkSuperquadricSource.h"
 #include "vtkTriangleFilter.h"
 
@@ -422,6 +423,36 @@ void TestPruning()
   CompareMethods(mesh, 24, 7, "large sphere", false);
   CompareGrazing(mesh, 24, 9, "large sphere");
 }
+
+// A mesh far from (0, 0, 0), as in world or geographic coordinates: the
+// tree's float bounds are relative to the mesh, so it prunes as well as at
+// the origin, and it still agrees with brute force edge for edge.
+void TestFarFromOrigin()
+{
+  vtkNew<vtkSphereSource> source;
+  source->SetThetaResolution(200);
+  source->SetPhiResolution(100);
+  source->SetCenter(1e6, -3e5, 2e5);
+  source->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  source->Update();
+  vtkPolyData* mesh = source->GetOutput();
+  auto filter =
+    Run(mesh, 1e6 + 4, -3e5 + 3, 2e5 + 2, true, vtkLightSilhouetteFilter::NORMAL_CONE_TREE);
+  MESH_CHECK(filter->GetNumberOfTestedEdges() * 10 < filter->GetNumberOfEdges(),
+    "far sphere: the tree tests fewer than a tenth of the edges (" +
+      std::to_string(filter->GetNumberOfTestedEdges()) + " of " +
+      std::to_string(filter->GetNumberOfEdges()) + ")");
+  CompareMethods(mesh, 24, 12, "far sphere", false);
+  CompareGrazing(mesh, 24, 13, "far sphere");
+  // Single precision points there: coarse steps of 1/16, faces of uneven
+  // shape, and planes that only the exact test can tell apart.
+  source->SetOutputPointsPrecision(vtkAlgorithm::SINGLE_PRECISION);
+  source->SetThetaResolution(40);
+  source->SetPhiResolution(30);
+  source->Update();
+  CompareMethods(source->GetOutput(), 24, 14, "far sphere, float points", false);
+  CompareGrazing(source->GetOutput(), 24, 15, "far sphere, float points");
+}
 }
 
 int TestLightSilhouetteFilter(int, char*[])
@@ -474,6 +505,7 @@ int TestLightSilhouetteFilter(int, char*[])
   CompareGrazing(Grid(30, 20, 0.4), 24, 11, "roof");
   CompareMethods(DamagedSphere(8), 24, 8, "damaged sphere");
   TestPruning();
+  TestFarFromOrigin();
 
   if (meshtest::Failures())
   {
