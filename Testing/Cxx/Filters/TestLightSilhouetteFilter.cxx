@@ -409,6 +409,15 @@ void TestCache()
   MESH_CHECK(Lines(filter) == Lines(fresh), "modified input: rebuilt");
 }
 
+// The tree's last search tested fewer than a tenth of the edges.
+void CheckPrunes(vtkLightSilhouetteFilter* filter, const std::string& label)
+{
+  MESH_CHECK(filter->GetNumberOfTestedEdges() * 10 < filter->GetNumberOfEdges(),
+    label + ": the tree tests fewer than a tenth of the edges (" +
+      std::to_string(filter->GetNumberOfTestedEdges()) + " of " +
+      std::to_string(filter->GetNumberOfEdges()) + ")");
+}
+
 void TestPruning()
 {
   // Large enough for the parallel walk; the tree tests a small part of the
@@ -416,10 +425,7 @@ void TestPruning()
   auto mesh = Sphere(200, 100);
   auto filter = Run(mesh, 4, 3, 2, true, vtkLightSilhouetteFilter::NORMAL_CONE_TREE);
   MESH_CHECK(filter->GetNumberOfEdges() > (1 << 14), "sphere: parallel walk");
-  MESH_CHECK(filter->GetNumberOfTestedEdges() * 10 < filter->GetNumberOfEdges(),
-    "sphere: the tree tests fewer than a tenth of the edges (" +
-      std::to_string(filter->GetNumberOfTestedEdges()) + " of " +
-      std::to_string(filter->GetNumberOfEdges()) + ")");
+  CheckPrunes(filter, "sphere");
   CompareMethods(mesh, 24, 7, "large sphere", false);
   CompareGrazing(mesh, 24, 9, "large sphere");
 }
@@ -438,10 +444,7 @@ void TestFarFromOrigin()
   vtkPolyData* mesh = source->GetOutput();
   auto filter =
     Run(mesh, 1e6 + 4, -3e5 + 3, 2e5 + 2, true, vtkLightSilhouetteFilter::NORMAL_CONE_TREE);
-  MESH_CHECK(filter->GetNumberOfTestedEdges() * 10 < filter->GetNumberOfEdges(),
-    "far sphere: the tree tests fewer than a tenth of the edges (" +
-      std::to_string(filter->GetNumberOfTestedEdges()) + " of " +
-      std::to_string(filter->GetNumberOfEdges()) + ")");
+  CheckPrunes(filter, "far sphere");
   CompareMethods(mesh, 24, 12, "far sphere", false);
   CompareGrazing(mesh, 24, 13, "far sphere");
   // Single precision points there: coarse steps of 1/16, faces of uneven
