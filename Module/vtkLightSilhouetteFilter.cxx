@@ -1,5 +1,6 @@
 #include "vtkLightSilhouetteFilter.h"
 
+#include "vtkBoundingBox.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkIdTypeArray.h"
@@ -297,15 +298,11 @@ int vtkLightSilhouetteFilter::RequestData(
         }
       });
     // A ball holding the mesh, for the tree's local frame.
-    double bounds[6];
-    input->GetPoints()->GetBounds(bounds);
-    const double origin[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
-      0.5 * (bounds[4] + bounds[5]) };
-    const double radius = 0.5 *
-      std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
-        (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
-        (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
-    internals.Tree.Build(edges, midpoints, normals, internals.Offsets.data(), origin, radius);
+    const vtkBoundingBox box(input->GetPoints()->GetBounds());
+    double origin[3];
+    box.GetCenter(origin);
+    internals.Tree.Build(
+      edges, midpoints, normals, internals.Offsets.data(), origin, 0.5 * box.GetDiagonalLength());
     internals.TreeBuilt = true;
     built = true;
   }
