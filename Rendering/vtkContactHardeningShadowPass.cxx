@@ -395,6 +395,9 @@ std::string vtkContactHardeningShadowPass::GetCameraPassDeclarations()
   dec << "#define CONTACT_LIGHTS " << in.CameraPassUnits.size() << "\n"
       << "#define CONTACT_MAPS " << maps << "\n"
       << "#define CONTACT_CUBES " << cubes << "\n"
+      << "#define CONTACT_LIGHT_SIZE " << (this->UseLightSize ? 1 : 0) << "\n"
+      << "#define CONTACT_COUNT_PASSES " << (this->Variant == MultiPass ? 1 : 0) << "\n"
+      << "#define CONTACT_PASS_LIMIT " << this->PassLimit << "\n"
       << vtkShadowNormalOffsetFS << "\n"
       << vtkShadowCubeLookupFS << "\n"
       << vtkContactDistanceFS << "\n";
@@ -411,10 +414,19 @@ std::string vtkContactHardeningShadowPass::GetCameraPassImplementation()
   int maps = 0, cubes = 0;
   for (size_t k = 0; k < in.CameraPassUnits.size(); ++k)
   {
-    const bool point = lights[in.CameraPassFirst + k].Point;
-    impl << "  gl_FragData[" << k << "] = vtkContactDistance("
-         << (point ? "contactLightCube[" : "contactLightDepth[") << (point ? cubes++ : maps++)
-         << "], " << k << ", vtkShadowPositionWC, vtkShadowNormalWC);\n";
+    const auto& light = lights[in.CameraPassFirst + k];
+    impl << "  gl_FragData[" << k << "] = vtkContactDistance(";
+    if (light.Point)
+    {
+      impl << "contactLightCube[" << cubes++ << "], " << k;
+    }
+    else
+    {
+      // Perspective (spot) or parallel (directional) map, compiled in.
+      impl << "contactLightDepth[" << maps++ << "], " << k << ", "
+           << (light.Directional ? "false" : "true");
+    }
+    impl << ", vtkShadowPositionWC, vtkShadowNormalWC);\n";
   }
   return impl.str();
 }
@@ -454,15 +466,19 @@ void vtkContactHardeningShadowPass::SetCameraPassUniforms(vtkShaderProgram* prog
   program->SetUniformf("contactCubeTexel", 2.0f / static_cast<float>(this->MapSize));
   program->SetUniformf("contactDistanceBias", static_cast<float>(this->DistanceBias));
   program->SetUniformf("contactNormalBias", static_cast<float>(this->NormalBias));
-  program->SetUniformi("useLightSize", this->UseLightSize ? 1 : 0);
-  program->SetUniformf("distancePower", static_cast<float>(this->DistancePower));
-  program->SetUniformf("distanceMultiplier", static_cast<float>(this->DistanceMultiplier));
+  if (!this->UseLightSize)
+  {
+    program->SetUniformf("distancePower", static_cast<float>(this->DistancePower));
+    program->SetUniformf("distanceMultiplier", static_cast<float>(this->DistanceMultiplier));
+    program->SetUniformf("resolutionDivisor", static_cast<float>(this->ResolutionDivisor));
+    return;
+  }
   program->SetUniform2f("pixelFootprint", glm::value_ptr(in.PixelFootprint));
-  program->SetUniformi("countPasses", this->Variant == MultiPass ? 1 : 0);
-  program->SetUniformf("resolutionDivisor", static_cast<float>(this->ResolutionDivisor));
-  program->SetUniformi("passLimit", this->PassLimit);
-  program->SetUniform1fv(
-    "passMidpoints", static_cast<int>(in.PassMidpoints.size()), in.PassMidpoints.data());
+  if (this->Variant == MultiPass)
+  {
+    program->SetUniform1fv(
+      "passMidpoints", static_cast<int>(in.PassMidpoints.size()), in.PassMidpoints.data());
+  }
 }
 
 //------------------------------------------------------------------------------

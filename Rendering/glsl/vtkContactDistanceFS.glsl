@@ -10,6 +10,12 @@
 // Spot and directional lights: their map's raw depth (CONTACT_MAPS samplers
 // without comparison); point lights: their cube map of squared distances
 // (CONTACT_CUBES).
+//
+// The pass's choices are compiled in, not uniforms: CONTACT_LIGHT_SIZE (D
+// from the light's size), CONTACT_COUNT_PASSES (D counts multi-pass blurs,
+// at most CONTACT_PASS_LIMIT), and per light whether its map is a
+// perspective one. A software rasterizer runs both arms of a branch, even
+// on a uniform, and this code runs on every fragment the camera draws.
 #if CONTACT_MAPS > 0
 uniform sampler2D contactLightDepth[CONTACT_MAPS];
 #endif
@@ -28,25 +34,26 @@ uniform float contactCubeTexel;
 uniform float contactDistanceBias;
 uniform float contactNormalBias;
 
-uniform bool useLightSize;
+#if CONTACT_LIGHT_SIZE
+uniform vec2 pixelFootprint; // world size of a buffer pixel: x + y * camera distance
+#else
 uniform float distancePower;
 uniform float distanceMultiplier;
-uniform vec2 pixelFootprint; // world size of a buffer pixel: x + y * camera distance
-
-uniform bool countPasses; // multi-pass: D is a number of passes
 uniform float resolutionDivisor; // viewport pixels per pixel of the buffers
-uniform int passLimit;
-// Multi-pass: the variance (pixels^2) halfway between that of k and of k + 1
-// blurs, k < passLimit (blur variances add).
-uniform float passMidpoints[64];
+#endif
 
 // Distance along a 2D map's axis for its depth in [0,1].
-float vtkContactLightDistance(int k, float depth)
+float vtkContactLightDistance(int k, float depth, bool perspective)
 {
   float n = contactDepthRange[k].x;
   float f = contactDepthRange[k].y;
-  return contactEye[k].w > 0.0 ? n * f / (f - depth * (f - n)) : n + depth * (f - n);
+  return perspective ? n * f / (f - depth * (f - n)) : n + depth * (f - n);
 }
+
+#if CONTACT_LIGHT_SIZE && CONTACT_COUNT_PASSES
+// The variance (pixels^2) halfway between that of k and of k + 1 blurs
+// (blur variances add).
+uniform float passMidpoints[CONTACT_PASS_LIMIT];
 
 // The number of blur passes whose summed variance comes closest to that of a
 // Gaussian of full width `width` (about 4 sigma, 2% to 98%): none for edges
@@ -56,12 +63,13 @@ float vtkContactPassesFor(float width)
 {
   float target = 0.0625 * width * width;
   float passes = 0.0;
-  for (int k = 0; k < passLimit; ++k)
+  for (int k = 0; k < CONTACT_PASS_LIMIT; ++k)
   {
     passes += passMidpoints[k] < target ? 1.0 : 0.0;
   }
   return passes;
 }
+#endif
 
 // What every light's texel shares, set once a fragment by
 // vtkContactCameraSetup(): the camera distance, and the screen pixels a world
@@ -73,6 +81,7 @@ void vtkContactCameraSetup(vec4 positionWC, vec3 normal)
 {
   vec3 camera = vtkShadowViewToWorld[3].xyz;
   contactCameraDistance = distance(positionWC.xyz, camera);
+#if CONTACT_LIGHT_SIZE
   // The penumbra lies on the receiver, which the view foreshortens by
   // |n.v| across its slope: an isotropic kernel sized for the unforeshortened
   // width blurs that way 1 / |n.v| times too far (seen edge-on, far worse
@@ -81,28 +90,26 @@ void vtkContactCameraSetup(vec4 positionWC, vec3 normal)
   float facing = abs(dot(normal, (camera - positionWC.xyz) / contactCameraDistance));
   contactPixelsPerLength =
     facing / (pixelFootprint.x + pixelFootprint.y * contactCameraDistance);
+#endif
 }
 
 // The texel of light `k` for a shadowed fragment.
 vec4 vtkContactShadowed(int k, float receiverDistance, float blockerDistance, bool perspective)
 {
   float occluderDistance = max(receiverDistance - blockerDistance, 0.0);
-  float d;
-  if (useLightSize)
-  {
-    float world =
-      occluderDistance * contactLightSize[k] / (perspective ? blockerDistance : 1.0);
-    float pixels = world * contactPixelsPerLength;
-    d = countPasses ? vtkContactPassesFor(pixels) : pixels;
-  }
-  else
-  {
-    // Dp and Dm are tuned in full-resolution pixels: a kernel
-    // `resolutionDivisor` times smaller covers as much, and a blur pass
-    // spreads as far as divisor^2 full-resolution ones (variances add).
-    d = pow(occluderDistance, distancePower) * distanceMultiplier /
-      (countPasses ? resolutionDivisor * resolutionDivisor : resolutionDivisor);
-  }
+#if CONTACT_LIGHT_SIZE
+  float world = occluderDistance * contactLightSize[k] / (perspective ? blockerDistance : 1.0);
+  float d = world * contactPixelsPerLength;
+#if CONTACT_COUNT_PASSES
+  d = vtkContactPassesFor(d);
+#endif
+#else
+  // Dp and Dm are tuned in full-resolution pixels: a kernel
+  // `resolutionDivisor` times smaller covers as much, and a blur pass
+  // spreads as far as divisor^2 full-resolution ones (variances add).
+  float d = pow(occluderDistance, distancePower) * distanceMultiplier /
+    (CONTACT_COUNT_PASSES > 0 ? resolutionDivisor * resolutionDivisor : resolutionDivisor);
+#endif
   return vec4(0.0, 0.0, contactCameraDistance, d);
 }
 
@@ -112,7 +119,7 @@ vec4 vtkContactLit()
 }
 
 #if CONTACT_MAPS > 0
-vec4 vtkContactDistance(sampler2D map, int k, vec4 positionWC, vec3 normal)
+vec4 vtkContactDistance(sampler2D map, int k, bool perspective, vec4 positionWC, vec3 normal)
 {
   vec4 receiver = vtkShadowNormalOffset(
     positionWC, normal, contactEye[k], contactAxis[k], contactFootprint[k], contactNormalBias);
@@ -127,8 +134,8 @@ vec4 vtkContactDistance(sampler2D map, int k, vec4 positionWC, vec3 normal)
   {
     return vtkContactLit();
   }
-  return vtkContactShadowed(k, vtkContactLightDistance(k, p.z),
-    vtkContactLightDistance(k, blockerDepth), contactEye[k].w > 0.0);
+  return vtkContactShadowed(k, vtkContactLightDistance(k, p.z, perspective),
+    vtkContactLightDistance(k, blockerDepth, perspective), perspective);
 }
 #endif
 
