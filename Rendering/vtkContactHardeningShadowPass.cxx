@@ -65,9 +65,9 @@ public:
     Resolve;
   // Pass 2's output, one per light of a camera pass.
   std::vector<vtkSmartPointer<vtkTextureObject>> DistanceMaps;
-  // The filtering passes' buffers: the prepare pass's target, and the single
-  // Gaussian's intermediate (the multi-pass blur ping-pongs with a distance
-  // map or the receivers' texture instead).
+  // The filtering passes' buffers: the prepare pass's target (the multi-pass
+  // blur ping-pongs between it and a distance map), and the single
+  // Gaussian's intermediate.
   std::array<vtkSmartPointer<vtkTextureObject>, 2> Maps;
   // Tile classification of a distance map for the prepare pass: per tile,
   // then spread over its neighbourhoods.
@@ -248,13 +248,8 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
   const int w = this->Screen->GetWidth();
   const int h = this->Screen->GetHeight();
   auto& lights = this->Maps->GetLights();
-  // A distance map is the second buffer of its light's ping-pong pair: for a
-  // multi-pass blur chain that ends on it (odd pass limit), it is the
-  // receivers' texture itself, and no map of its own is needed.
-  const bool chainEndsOnMap =
-    this->Variant == MultiPass && !this->DebugView && this->PassLimit % 2 == 1;
   const size_t lightsPerPass = std::min(lights.size(), static_cast<size_t>(in.LightsPerCameraPass));
-  in.DistanceMaps.resize(chainEndsOnMap ? 0 : lightsPerPass);
+  in.DistanceMaps.resize(lightsPerPass);
   auto allocate = [context](vtkSmartPointer<vtkTextureObject>& map, int width, int height)
   {
     if (!map)
@@ -330,8 +325,7 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
     std::vector<vtkTextureObject*> targets;
     for (size_t k = 0; k < count; ++k)
     {
-      targets.push_back(chainEndsOnMap ? this->Screen->GetVisibility(static_cast<int>(first + k))
-                                       : in.DistanceMaps[k].Get());
+      targets.push_back(in.DistanceMaps[k]);
     }
     if (!this->RenderDistanceMaps(s, first, targets))
     {
@@ -527,24 +521,23 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
 
   // The ping-pong pair: the prepare pass's target and the distance map,
   // which holds the final value of every pixel no blur touches. The
-  // multi-pass variant's last blur target is the receivers' visibility
-  // texture (the layout is theirs), so no pass copies it there.
-  vtkTextureObject* visibility = this->Screen->GetVisibility(slot);
-  const bool blursIntoVisibility = this->Variant == MultiPass && !this->DebugView;
-  const std::array<vtkTextureObject*, 2> pair = {
-    blursIntoVisibility && this->PassLimit % 2 == 0 ? visibility : in.Maps[0].Get(), distance
-  };
+  // receivers' texture holds codes (vtkShadowPackTexel()): the prepare pass
+  // writes every pixel's, and each multi-pass blur those of the pixels it
+  // draws, so that a pixel's last pass leaves its final code there without
+  // a pass of its own. The other variants' last pass writes them all.
+  vtkTextureObject* packed = this->Screen->GetPacked(slot);
+  const std::array<vtkTextureObject*, 2> pair = { in.Maps[0], distance };
 
-  auto toVisibility = [&](std::unique_ptr<vtkOpenGLQuadHelper>& quad, vtkTextureObject* input,
-                        const std::function<void(vtkShaderProgram*)>& uniforms)
+  auto toPacked = [&](std::unique_ptr<vtkOpenGLQuadHelper>& quad, vtkTextureObject* input,
+                    const std::function<void(vtkShaderProgram*)>& uniforms)
   {
-    in.Target(context, w, h, visibility);
+    in.Target(context, w, h, packed);
     in.Draw(this->Screen.get(), quad, input, uniforms, tolerance, this->DebugView);
     in.Untarget();
   };
 
   // Umbra early-out and pass 3.
-  in.Target(context, w, h, pair[0], nullptr, true);
+  in.Target(context, w, h, pair[0], packed, true);
   in.TileMaps[1]->Activate();
   in.Draw(
     this->Screen.get(), in.Prepare, distance,
@@ -570,7 +563,8 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
     // widest penumbra's cost nothing. The condition stays on the GPU. A
     // pixel's last blur is followed by a pass that copies it into the
     // other buffer, unless the pass limit comes first; either way the last
-    // target, pair[PassLimit % 2], holds every pixel's final value.
+    // target, pair[PassLimit % 2], holds every pixel's final value, and so
+    // does the receivers' texture.
     if (!in.Queries[0])
     {
       glGenQueries(2, in.Queries);
@@ -583,7 +577,7 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
         glBeginConditionalRender(in.Queries[(pass - 1) % 2], GL_QUERY_WAIT);
       }
       glBeginQuery(GL_SAMPLES_PASSED, in.Queries[pass % 2]);
-      in.Target(context, w, h, pair[(pass + 1) % 2], nullptr, true);
+      in.Target(context, w, h, pair[(pass + 1) % 2], packed, true);
       in.Draw(
         this->Screen.get(), in.MultiPass, pair[pass % 2],
         [&](vtkShaderProgram* program)
@@ -601,9 +595,9 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
         glEndConditionalRender();
       }
     }
-    if (!blursIntoVisibility)
+    if (this->DebugView)
     {
-      toVisibility(in.Resolve, pair[this->PassLimit % 2], [](vtkShaderProgram*) {});
+      toPacked(in.Resolve, pair[this->PassLimit % 2], [](vtkShaderProgram*) {});
     }
   }
   else if (this->Variant == Gaussian)
@@ -619,7 +613,7 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
       },
       tolerance, this->DebugView);
     in.Untarget();
-    toVisibility(in.Gaussian, in.Maps[1],
+    toPacked(in.Gaussian, in.Maps[1],
       [&](vtkShaderProgram* program)
       {
         program->SetUniformi("maximumKernel", this->MaximumKernelSize);
@@ -629,7 +623,7 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
   }
   else
   {
-    toVisibility(in.PCF, in.Maps[0],
+    toPacked(in.PCF, in.Maps[0],
       [&](vtkShaderProgram* program)
       { program->SetUniformi("maximumKernel", this->MaximumKernelSize); });
   }

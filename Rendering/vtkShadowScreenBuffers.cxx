@@ -19,7 +19,7 @@
 #include "vtkShadowPackFS.h"
 #include "vtkShadowScreenCommonFS.h"
 
-#include <algorithm> // for std::max
+#include <algorithm> // for std::any_of, std::fill, std::max, std::none_of
 #include <cmath>     // for std::log2
 #include <string>
 
@@ -60,6 +60,11 @@ bool vtkShadowScreenBuffers::Update(const vtkRenderState* s)
   {
     texture->Resize(this->Width, this->Height);
   }
+  for (auto& texture : this->Packed)
+  {
+    texture->Resize(this->Width, this->Height);
+  }
+  std::fill(this->Writer.begin(), this->Writer.end(), Written::None);
 
   // Clip to world for this frame's camera and aspect ratio.
   vtkCamera* camera = renderer->GetActiveCamera();
@@ -137,6 +142,11 @@ void vtkShadowScreenBuffers::DrawQuad(vtkOpenGLQuadHelper* quad,
   quad->Program->SetUniformi("vtkScreenDepth", this->CameraDepth->GetTextureUnit());
   quad->Program->SetUniformMatrix4x4("vtkScreenClipToWorld", this->ClipToWorld);
   quad->Program->SetUniform3f("vtkScreenCameraPosition", this->CameraPosition);
+  if (quad->Program->IsUniformUsed("vtkShadowCodesPerLog"))
+  {
+    quad->Program->SetUniformf("vtkShadowLogNear", this->LogNear);
+    quad->Program->SetUniformf("vtkShadowCodesPerLog", this->CodesPerLog);
+  }
   setUniforms(quad->Program);
   quad->Render();
   if (mask == QuadMask::Test)
@@ -172,7 +182,29 @@ vtkTextureObject* vtkShadowScreenBuffers::GetVisibility(int slot)
   {
     this->Visibility.push_back(NewFloatTexture(this->Context, this->Width, this->Height, 4));
   }
+  this->MarkWritten(slot, Written::Visibility);
   return this->Visibility[slot];
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkShadowScreenBuffers::GetPacked(int slot)
+{
+  while (static_cast<int>(this->Packed.size()) <= slot)
+  {
+    this->Packed.push_back(NewFloatTexture(this->Context, this->Width, this->Height, 1));
+  }
+  this->MarkWritten(slot, Written::Packed);
+  return this->Packed[slot];
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenBuffers::MarkWritten(int slot, Written writer)
+{
+  if (static_cast<int>(this->Writer.size()) <= slot)
+  {
+    this->Writer.resize(slot + 1, Written::None);
+  }
+  this->Writer[slot] = writer;
 }
 
 //------------------------------------------------------------------------------
@@ -222,11 +254,23 @@ bool vtkShadowScreenBuffers::Pack(int numberOfLights)
     }
     return false;
   }
+  if (static_cast<int>(this->Writer.size()) < numberOfLights ||
+    std::any_of(this->Writer.begin(), this->Writer.begin() + numberOfLights,
+      [](Written w) { return w == Written::None; }))
+  {
+    vtkGenericWarningMacro("A screen-space technique left a light's visibility unwritten.");
+    return false;
+  }
+  if (std::none_of(this->Writer.begin(), this->Writer.begin() + numberOfLights,
+        [](Written w) { return w == Written::Visibility; }))
+  {
+    return true;
+  }
   if (!this->PackQuad)
   {
     this->PackQuad = this->CreateQuad(this->Context, vtkShadowPackFS);
   }
-  if (!this->PackQuad->Program || numberOfLights > static_cast<int>(this->Visibility.size()))
+  if (!this->PackQuad->Program)
   {
     return false;
   }
@@ -234,26 +278,19 @@ bool vtkShadowScreenBuffers::Pack(int numberOfLights)
   vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
   state->vtkglDisable(GL_BLEND);
   this->BindFramebuffer();
-  this->Packed.resize(numberOfLights);
   for (int slot = 0; slot < numberOfLights; ++slot)
   {
-    auto& packed = this->Packed[slot];
-    if (!packed)
+    if (this->Writer[slot] != Written::Visibility)
     {
-      packed = NewFloatTexture(this->Context, this->Width, this->Height, 1);
+      continue;
     }
-    packed->Resize(this->Width, this->Height);
-    this->Framebuffer->AddColorAttachment(0, packed);
+    this->Framebuffer->AddColorAttachment(0, this->GetPacked(slot));
     this->Framebuffer->ActivateDrawBuffers(1);
     vtkTextureObject* visibility = this->Visibility[slot];
     visibility->Activate();
     this->DrawQuad(this->PackQuad.get(),
       [&](vtkShaderProgram* program)
-      {
-        program->SetUniformi("vtkShadowVisibility", visibility->GetTextureUnit());
-        program->SetUniformf("vtkShadowLogNear", this->LogNear);
-        program->SetUniformf("vtkShadowCodesPerLog", this->CodesPerLog);
-      });
+      { program->SetUniformi("vtkShadowVisibility", visibility->GetTextureUnit()); });
     visibility->Deactivate();
   }
   this->Framebuffer->RemoveColorAttachment(0);
@@ -313,6 +350,7 @@ void vtkShadowScreenBuffers::ReleaseGraphicsResources(vtkWindow* w)
     texture->ReleaseGraphicsResources(w);
   }
   this->Packed.clear();
+  this->Writer.clear();
   this->PackQuad.reset();
   if (this->Framebuffer)
   {

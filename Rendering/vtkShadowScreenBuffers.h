@@ -113,10 +113,21 @@ public:
   vtkTextureObject* GetVisibility(int slot);
 
   /**
-   * After the technique's passes: code each light's visibility texture for
-   * the receivers (vtkShadowPackFS.glsl: one float a texel), so that their
-   * bilinear lookup gathers four texels in one fetch. Needs OpenGL 4.0 or
-   * ARB_texture_gather; without, reports it once and returns false.
+   * Light `slot`'s receivers' texture, allocated on demand (one float a
+   * texel, the buffers' size), for a technique that writes the codes itself
+   * (vtkShadowPackTexel() in vtkShadowScreenCommonFS.glsl, which a quad's
+   * shader gets) in its last passes and saves Pack() a full-screen pass.
+   * Every texel must be written.
+   */
+  vtkTextureObject* GetPacked(int slot);
+
+  /**
+   * After the technique's passes: code the visibility texture of each light
+   * drawn through BeginVisibility() or GetVisibility() for the receivers
+   * (vtkShadowPackFS.glsl), so that their bilinear lookup gathers four texels
+   * in one fetch; lights whose codes the technique wrote (GetPacked()) stay
+   * as they are. Returns false, with a warning, if a light got neither this
+   * frame, or without OpenGL 4.0 or ARB_texture_gather (reported once).
    */
   bool Pack(int numberOfLights);
 
@@ -134,6 +145,15 @@ private:
   /// demand) over the buffers' size.
   void BindFramebuffer();
 
+  /// What a light's receivers' texture comes from this frame.
+  enum class Written
+  {
+    None,
+    Visibility, ///< a visibility texture, coded by Pack()
+    Packed      ///< the technique's own codes
+  };
+  void MarkWritten(int slot, Written writer);
+
   vtkOpenGLRenderWindow* Context = nullptr;
   int Divisor = 1;
   int Width = 0; // the buffers', Divisor times smaller than the viewport
@@ -145,6 +165,7 @@ private:
   vtkSmartPointer<vtkTextureObject> CameraDepth;
   std::vector<vtkSmartPointer<vtkTextureObject>> Visibility;
   std::vector<vtkSmartPointer<vtkTextureObject>> Packed;
+  std::vector<Written> Writer; // per light, reset by Update()
   std::unique_ptr<vtkOpenGLQuadHelper> PackQuad;
   float LogNear = 0.0f;     // packed camera distances: log2 of the smallest
   float CodesPerLog = 1.0f; // and codes per unit of log2

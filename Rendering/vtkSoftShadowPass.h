@@ -197,9 +197,10 @@ protected:
 
   /**
    * Step 3, optional: screen-space passes. Techniques that override it return
-   * true from UsesScreenSpace() and write one visibility texture per light in
-   * this->Screen (see vtkShadowScreenBuffers::BeginVisibility()). Default:
-   * nothing.
+   * true from UsesScreenSpace() and write, for each light, a visibility
+   * texture (vtkShadowScreenBuffers::BeginVisibility()) or the receivers'
+   * codes directly (vtkShadowScreenBuffers::GetPacked()) in this->Screen.
+   * Default: nothing.
    */
   virtual bool RenderScreenSpace(const vtkRenderState*) { return true; }
   virtual bool UsesScreenSpace() const { return false; }

@@ -3,7 +3,8 @@
 // normalised), for pixels whose D is still positive; D drops by one. Only
 // pixels the prepare pass selected for this pass are drawn (depth mask):
 // those still blurring, and those whose D ran out in the pass before, copied
-// so that both ping-pong buffers agree on them from then on.
+// so that both ping-pong buffers agree on them from then on. Each also
+// writes its code into the receivers' texture.
 uniform vec3 taps[64]; // offsets in pixels for this pass's kernel, and weights
 uniform int tapCount;
 
@@ -11,22 +12,24 @@ void main()
 {
   ivec2 pixel = vtkScreenPixel();
   vec4 c = vtkContactFetch(pixel);
-  if (c.a <= 0.0)
+  vec4 texel = c;
+  if (c.a > 0.0)
   {
-    gl_FragData[0] = c;
-    return;
-  }
-  // Tap 0 lies at the origin: this pixel.
-  float sum = taps[0].z * c.r;
-  float weights = taps[0].z;
-  for (int i = 1; i < tapCount; ++i)
-  {
-    vec4 t = vtkContactFetch(pixel + ivec2(taps[i].xy));
-    if (vtkContactSameSurface(c, t))
+    // Tap 0 lies at the origin: this pixel.
+    float sum = taps[0].z * c.r;
+    float weights = taps[0].z;
+    for (int i = 1; i < tapCount; ++i)
     {
-      sum += taps[i].z * t.r;
-      weights += taps[i].z;
+      vec4 t = vtkContactFetch(pixel + ivec2(taps[i].xy));
+      if (vtkContactSameSurface(c, t))
+      {
+        sum += taps[i].z * t.r;
+        weights += taps[i].z;
+      }
     }
+    texel = vec4(sum / weights, c.g, c.b, max(c.a - 1.0, 0.0));
   }
-  gl_FragData[0] = vec4(sum / weights, c.g, c.b, max(c.a - 1.0, 0.0));
+  gl_FragData[0] = texel;
+  // The pixel's code for the receivers: its last pass leaves the final one.
+  gl_FragData[1] = vec4(vtkShadowPackTexel(texel));
 }

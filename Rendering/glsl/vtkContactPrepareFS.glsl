@@ -2,7 +2,8 @@
 // whole neighbourhood is shadowed) and the optional dilation of D (pass 3).
 // Reads the distance map, the other ping-pong buffer, where pixels left
 // unblurred already hold their final value; writes the pixel with its D
-// settled, and a depth that lets multi-pass blur k (drawn at depth
+// settled, its code in the receivers' texture (final unless a blur follows),
+// and a depth that lets multi-pass blur k (drawn at depth
 // 1 - k / 256) through only where D > k - 1: the ceil(D) passes that blur the
 // pixel and one more that copies its final value into the other buffer.
 // Elsewhere depth 1: no blur touches it.
@@ -48,6 +49,8 @@ void main()
   // Below one (a pass, a pixel) a blur changes nothing worth the pixel's
   // sharper full-resolution hard shadow in the receivers.
   d = d >= 1.0 ? d : 0.0;
-  gl_FragData[0] = vec4(c.r, d > 0.0 ? 1.0 : 0.0, c.b, d);
+  vec4 texel = vec4(c.r, d > 0.0 ? 1.0 : 0.0, c.b, d);
+  gl_FragData[0] = texel;
+  gl_FragData[1] = vec4(vtkShadowPackTexel(texel));
   gl_FragDepth = d > 0.0 ? 1.0 - (min(ceil(d), 254.0) + 1.0) / 256.0 : 1.0;
 }

@@ -1,6 +1,6 @@
 // Pass 5 of the multi-pass variant in the debug view: the last blur's
-// visibility marked as in the paper's figure 4. (Otherwise the last blur
-// writes the receivers' texture itself.)
+// visibility marked as in the paper's figure 4. (Otherwise the prepare pass
+// and the blurs write the receivers' codes themselves.)
 void main()
 {
   vec4 c = vtkContactFetch(vtkScreenPixel());

@@ -8,6 +8,24 @@ uniform sampler2D vtkScreenDepth;
 uniform mat4 vtkScreenClipToWorld;
 uniform vec3 vtkScreenCameraPosition;
 
+// The receivers' code of a visibility texel (r = visibility, g = 1 where r is
+// valid, b = camera distance; vtkShadowScreenBuffers::BeginVisibility()):
+// one float, an integer below 2^23, exact: 2048 * visibility in [0, 4094]
+// (4095: not valid) plus the camera distance on a log scale in [1, 2047]
+// (0: no surface). A receiver's bilinear lookup then gathers the four codes
+// around it in one fetch (textureGather) instead of fetching four texels.
+uniform float vtkShadowLogNear;     // log2 of the smallest camera distance coded
+uniform float vtkShadowCodesPerLog; // distance codes per unit of log2
+
+float vtkShadowPackTexel(vec4 t)
+{
+  float visibility = t.g > 0.5 ? floor(clamp(t.r, 0.0, 1.0) * 4094.0 + 0.5) : 4095.0;
+  float distance = t.b > 0.0
+    ? clamp(floor((log2(t.b) - vtkShadowLogNear) * vtkShadowCodesPerLog + 1.5), 1.0, 2047.0)
+    : 0.0;
+  return visibility * 2048.0 + distance;
+}
+
 // This pixel. From texCoord rather than gl_FragCoord so that every pass uses
 // the quad's texture coordinates (VTK's quad helper binds them).
 ivec2 vtkScreenPixel()

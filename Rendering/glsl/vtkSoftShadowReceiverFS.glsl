@@ -74,7 +74,7 @@ uniform float vtkShadowDistanceBias; // multiplicative, on squared distances
 uniform sampler2D vtkShadowScreen[VTK_SHADOW_LIGHTS];
 uniform vec2 vtkShadowViewportOrigin;
 uniform vec2 vtkShadowScreenScale; // viewport pixels to screen-space texels
-uniform float vtkShadowLogNear;    // see vtkShadowPackFS.glsl
+uniform float vtkShadowLogNear;    // see vtkShadowPackTexel(), vtkShadowScreenCommonFS.glsl
 uniform float vtkShadowCodesPerLog;
 
 // What the lookups of all lights share (their textures have one size): the
