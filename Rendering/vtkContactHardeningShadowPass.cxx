@@ -35,6 +35,7 @@
 
 #include <array>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 #include <string>
 
@@ -83,7 +84,7 @@ public:
   int LightsPerCameraPass = 1;        // distance maps one camera pass writes
   size_t CameraPassFirst = 0;         // the first light the camera pass draws
   std::vector<int> CameraPassUnits;   // texture units of its lights' maps
-  std::vector<float> PassMidpoints;   // see passMidpoints in vtkContactDistanceFS.glsl
+  std::vector<float> PassMidpoints;   // see vtkContactPassesFor() in vtkContactDistanceFS.glsl
   std::vector<float> FrameTaps;       // this frame's Taps(PoissonTaps)
   bool Unsupported = false;
   // Section 3.1: up to 64 Poisson-disk points in [-1,1]^2, the first at the
@@ -391,8 +392,19 @@ std::string vtkContactHardeningShadowPass::GetCameraPassDeclarations()
       << "#define CONTACT_CUBES " << cubes << "\n"
       << "#define CONTACT_LIGHT_SIZE " << (this->UseLightSize ? 1 : 0) << "\n"
       << "#define CONTACT_COUNT_PASSES " << (this->Variant == MultiPass ? 1 : 0) << "\n"
-      << "#define CONTACT_PASS_LIMIT " << this->PassLimit << "\n"
-      << vtkShadowNormalOffsetFS << "\n"
+      << "#define CONTACT_PASS_LIMIT " << this->PassLimit << "\n";
+  if (this->UseLightSize && this->Variant == MultiPass)
+  {
+    // Exact: 9 significant digits round-trip a float.
+    dec << "const float passMidpoints[" << in.PassMidpoints.size() << "] = float[](";
+    dec << std::scientific << std::setprecision(9);
+    for (size_t k = 0; k < in.PassMidpoints.size(); ++k)
+    {
+      dec << (k > 0 ? ", " : "") << in.PassMidpoints[k];
+    }
+    dec << ");\n";
+  }
+  dec << vtkShadowNormalOffsetFS << "\n"
       << vtkShadowCubeLookupFS << "\n"
       << vtkContactDistanceFS << "\n";
   return dec.str();
@@ -468,11 +480,6 @@ void vtkContactHardeningShadowPass::SetCameraPassUniforms(vtkShaderProgram* prog
     return;
   }
   program->SetUniform2f("pixelFootprint", glm::value_ptr(in.PixelFootprint));
-  if (this->Variant == MultiPass)
-  {
-    program->SetUniform1fv(
-      "passMidpoints", static_cast<int>(in.PassMidpoints.size()), in.PassMidpoints.data());
-  }
 }
 
 //------------------------------------------------------------------------------

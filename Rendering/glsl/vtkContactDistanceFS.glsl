@@ -51,9 +51,10 @@ float vtkContactLightDistance(int k, float depth, bool perspective)
 }
 
 #if CONTACT_LIGHT_SIZE && CONTACT_COUNT_PASSES
-// The variance (pixels^2) halfway between that of k and of k + 1 blurs
+// passMidpoints[CONTACT_PASS_LIMIT], declared before this file as constants
+// (compares against immediates cost a third of those against uniforms):
+// the variance (pixels^2) halfway between that of k and of k + 1 blurs
 // (blur variances add).
-uniform float passMidpoints[CONTACT_PASS_LIMIT];
 
 // The number of blur passes whose summed variance comes closest to that of a
 // Gaussian of full width `width` (about 4 sigma, 2% to 98%): none for edges
