@@ -28,8 +28,9 @@
  * 8 lights at once. The early-out and the dilation look up a classification
  * of 8x8-pixel tiles rather than loop over taps everywhere. Multi-pass blurs
  * draw only the pixels still blurring (the depth buffer holds each pixel's
- * pass count), stop, on the GPU, once no pixel is left, and the last one
- * writes the receivers' texture.
+ * pass count) and stop, on the GPU, once no pixel is left; the prepare pass
+ * and each blur write the receivers' codes of the pixels they draw, so no
+ * pass of its own codes them.
  *
  * D comes either from the paper's D = (occluder distance)^Dp * Dm
  * (UseLightSize off: DistancePower and DistanceMultiplier, tuned per scene), or,
