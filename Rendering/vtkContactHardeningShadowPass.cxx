@@ -531,8 +531,10 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
   // receivers' texture holds codes (vtkShadowPackTexel()): the prepare pass
   // writes every pixel's, and each multi-pass blur those of the pixels it
   // draws, so that a pixel's last pass leaves its final code there without
-  // a pass of its own. The other variants' last pass writes them all.
+  // a pass of its own. The other variants' last pass writes them all, as
+  // does the debug view's, so there the chain writes none.
   vtkTextureObject* packed = this->Screen->GetPacked(slot);
+  vtkTextureObject* chainCodes = this->Variant == MultiPass && !this->DebugView ? packed : nullptr;
   const std::array<vtkTextureObject*, 2> pair = { in.Maps[0], distance };
 
   auto toPacked = [&](std::unique_ptr<vtkOpenGLQuadHelper>& quad, vtkTextureObject* input,
@@ -544,7 +546,7 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
   };
 
   // Umbra early-out and pass 3.
-  in.Target(context, w, h, pair[0], packed, true);
+  in.Target(context, w, h, pair[0], chainCodes, true);
   in.TileMaps[1]->Activate();
   in.Draw(
     this->Screen.get(), in.Prepare, distance,
@@ -584,7 +586,7 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
         glBeginConditionalRender(in.Queries[(pass - 1) % 2], GL_QUERY_WAIT);
       }
       glBeginQuery(GL_SAMPLES_PASSED, in.Queries[pass % 2]);
-      in.Target(context, w, h, pair[(pass + 1) % 2], packed, true);
+      in.Target(context, w, h, pair[(pass + 1) % 2], chainCodes, true);
       in.Draw(
         this->Screen.get(), in.MultiPass, pair[pass % 2],
         [&](vtkShaderProgram* program)

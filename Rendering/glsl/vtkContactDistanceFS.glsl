@@ -52,9 +52,9 @@ float vtkContactLightDistance(int k, float depth, bool perspective)
 
 #if CONTACT_LIGHT_SIZE && CONTACT_COUNT_PASSES
 // passMidpoints[CONTACT_PASS_LIMIT], declared before this file as constants
-// (compares against immediates cost a third of those against uniforms):
-// the variance (pixels^2) halfway between that of k and of k + 1 blurs
-// (blur variances add).
+// (llvmpipe reloads a uniform at every compare; against immediates the
+// count costs a sixth as much): the variance (pixels^2) halfway between that
+// of k and of k + 1 blurs (blur variances add).
 
 // The number of blur passes whose summed variance comes closest to that of a
 // Gaussian of full width `width` (about 4 sigma, 2% to 98%): none for edges
