@@ -9,11 +9,20 @@ set(softshadows_rendering_classes
 
 # Framework internals shared by the techniques; not part of the public API.
 set(softshadows_rendering_private_classes
+  vtkShadowCasterRegistry
+  vtkShadowCompute
+  vtkShadowDepthStage
+  vtkShadowDistanceStage
+  vtkShadowDrawer
+  vtkShadowGeometry
   vtkShadowMapManager
-  vtkShadowScreenBuffers)
+  vtkShadowScreenBuffers
+  vtkShadowShaderHooks
+  vtkShadowStage)
 
 # Header-only internals.
 set(softshadows_rendering_private_headers
+  vtkShadowMapperCode.h
   vtkShadowSampling.h)
 
 # Shaders live in glsl/ and are embedded as C strings at build time.
@@ -29,6 +38,7 @@ set(softshadows_rendering_shaders
   vtkContactTilesFS
   vtkOmniPoissonFS
   vtkShadowAccumulateFS
+  vtkShadowCubeDistanceFS
   vtkShadowCubeLayersGS
   vtkShadowCubeLookupFS
   vtkShadowNormalOffsetFS

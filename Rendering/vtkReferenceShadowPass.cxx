@@ -140,7 +140,7 @@ bool vtkReferenceShadowPass::AccumulateSample(const vtkRenderState* s, int slot,
   {
     this->Maps->AllocateCubeMap(context, sample, this->MapSize, this->PackedCubeMaps);
     map = sample.CubeMap;
-    if (!this->Maps->RenderDistanceCube(s, this, this->Maps->CubeFaces(eye), map))
+    if (!this->RenderDistanceCube(s, this->Maps->CubeFaces(eye), map))
     {
       return false;
     }
@@ -150,7 +150,7 @@ bool vtkReferenceShadowPass::AccumulateSample(const vtkRenderState* s, int slot,
     this->Maps->AllocateDepthMap(context, sample, this->MapSize, false);
     map = sample.DepthMap;
     frustum = this->Maps->FitFrustum(light, eye, direction);
-    if (!this->Maps->RenderDepth(s, this, frustum, map))
+    if (!this->RenderDepthMap(s, frustum, map))
     {
       return false;
     }

@@ -1,22 +1,13 @@
 #include "vtkShadowMapManager.h"
 
-#include "vtkCamera.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMath.h"
-#include "vtkMatrix4x4.h"
-#include "vtkOpenGLCamera.h"
-#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkOpenGLState.h"
-#include "vtkProp.h"
-#include "vtkPropCollection.h"
-#include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkSoftShadowPass.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -141,6 +132,7 @@ int vtkShadowMapManager::Update(vtkRenderer* renderer)
     {
       light.DepthMap = previous[slot].DepthMap;
       light.CubeMap = previous[slot].CubeMap;
+      light.Textures = previous[slot].Textures;
     }
     this->Lights.push_back(light);
   }
@@ -272,56 +264,6 @@ void vtkShadowMapManager::AllocateDepthMap(
 }
 
 //------------------------------------------------------------------------------
-void vtkShadowMapManager::SetCamera(const Frustum& frustum)
-{
-  if (!this->LightCamera)
-  {
-    this->LightCamera = vtkSmartPointer<vtkOpenGLCamera>::New();
-  }
-  // The mappers draw with exactly the matrices the receivers look up with:
-  // explicit projection, so the window's aspect ratio plays no part.
-  vtkCamera* camera = this->LightCamera;
-  camera->SetPosition(frustum.Eye.x, frustum.Eye.y, frustum.Eye.z);
-  const glm::dvec3 focal = frustum.Eye + frustum.Direction;
-  camera->SetFocalPoint(focal.x, focal.y, focal.z);
-  camera->SetViewUp(frustum.Up.x, frustum.Up.y, frustum.Up.z);
-  camera->SetParallelProjection(frustum.Parallel);
-  camera->SetClippingRange(frustum.Near, frustum.Far);
-  vtkNew<vtkMatrix4x4> projection;
-  for (int row = 0; row < 4; ++row)
-  {
-    for (int col = 0; col < 4; ++col)
-    {
-      projection->SetElement(row, col, frustum.Projection[col][row]);
-    }
-  }
-  camera->SetExplicitProjectionTransformMatrix(projection);
-  camera->SetUseExplicitProjectionTransformMatrix(true);
-}
-
-//------------------------------------------------------------------------------
-bool vtkShadowMapManager::RenderDepth(const vtkRenderState* s, vtkSoftShadowPass* pass,
-  const Frustum& frustum, vtkTextureObject* target)
-{
-  this->SetCamera(frustum);
-  vtkRenderer* renderer = s->GetRenderer();
-  vtkSmartPointer<vtkCamera> viewCamera = renderer->GetActiveCamera();
-  renderer->SetActiveCamera(this->LightCamera);
-  const bool ok =
-    this->DrawDepth(s, pass, target, true, true, vtkSoftShadowPass::Stage::LightDepth);
-  renderer->SetActiveCamera(viewCamera);
-  return ok;
-}
-
-//------------------------------------------------------------------------------
-bool vtkShadowMapManager::RenderCameraDepth(const vtkRenderState* s, vtkSoftShadowPass* pass,
-  vtkTextureObject* target, const std::vector<vtkTextureObject*>& colourTargets)
-{
-  return this->DrawDepth(
-    s, pass, target, false, false, vtkSoftShadowPass::Stage::CameraDepth, colourTargets);
-}
-
-//------------------------------------------------------------------------------
 void vtkShadowMapManager::AllocateCubeMap(
   vtkOpenGLRenderWindow* context, Light& light, int size, bool packed)
 {
@@ -347,265 +289,6 @@ void vtkShadowMapManager::AllocateCubeMap(
   {
     cube->CreateCubeFromRaw(size, size, 1, VTK_FLOAT, nullptr);
   }
-}
-
-//------------------------------------------------------------------------------
-bool vtkShadowMapManager::RenderDistanceCube(const vtkRenderState* s, vtkSoftShadowPass* pass,
-  const std::array<Frustum, 6>& faces, vtkTextureObject* cube)
-{
-  vtkRenderer* renderer = s->GetRenderer();
-  auto* context = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
-  const int size = static_cast<int>(cube->GetWidth());
-  if (!this->CubeDepth || this->CubeDepth->GetContext() != context)
-  {
-    this->CubeDepth = vtkSmartPointer<vtkTextureObject>::New();
-    this->CubeDepth->SetContext(context);
-    this->CubeDepth->AllocateDepth(size, size, vtkTextureObject::Float32);
-  }
-  this->CubeDepth->Resize(size, size);
-  if (!this->DepthFramebuffer)
-  {
-    this->DepthFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-    this->DepthFramebuffer->SetContext(context);
-  }
-
-  if (pass->GetSinglePassCubeMaps())
-  {
-    return this->DrawLayeredCube(s, pass, faces, cube);
-  }
-
-  vtkSmartPointer<vtkCamera> viewCamera = renderer->GetActiveCamera();
-  vtkOpenGLState* state = context->GetState();
-  state->PushFramebufferBindings();
-  bool ok = true;
-  for (int f = 0; f < 6 && ok; ++f)
-  {
-    this->SetCamera(faces[f]);
-    renderer->SetActiveCamera(this->LightCamera);
-    const glm::mat4 clipToView(glm::inverse(faces[f].Projection));
-    std::copy(glm::value_ptr(clipToView), glm::value_ptr(clipToView) + 16, pass->FaceClipToView);
-    pass->FaceSize = static_cast<float>(size);
-    pass->FaceRange =
-      pass->GetPackedCubeMaps() ? static_cast<float>(faces[f].Far * faces[f].Far) : 0.0f;
-
-    this->DepthFramebuffer->Bind();
-    this->DepthFramebuffer->AddColorAttachment(0, cube, 0, GL_TEXTURE_CUBE_MAP_POSITIVE_X + f);
-    this->DepthFramebuffer->AddDepthAttachment(this->CubeDepth);
-    this->DepthFramebuffer->ActivateDrawBuffers(1);
-    // Nothing drawn is infinitely far (packed: the largest value): lit.
-    vtkOpenGLState::ScopedglClearColor clearColor(state);
-    const float far = pass->GetPackedCubeMaps() ? 1.0f : VTK_FLOAT_MAX;
-    state->vtkglClearColor(far, far, far, far);
-    ok = this->DrawProps(
-      s, pass, size, size, true, false, vtkSoftShadowPass::Stage::LightDistance, true);
-    this->DepthFramebuffer->RemoveColorAttachment(0);
-    this->DepthFramebuffer->RemoveDepthAttachment();
-    renderer->SetActiveCamera(viewCamera);
-  }
-  state->PopFramebufferBindings();
-  return ok;
-}
-
-//------------------------------------------------------------------------------
-bool vtkShadowMapManager::DrawLayeredCube(const vtkRenderState* s, vtkSoftShadowPass* pass,
-  const std::array<Frustum, 6>& faces, vtkTextureObject* cube)
-{
-  vtkRenderer* renderer = s->GetRenderer();
-  auto* context = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
-  vtkOpenGLState* state = context->GetState();
-  const int size = static_cast<int>(cube->GetWidth());
-  if (this->LayeredContext != context)
-  {
-    this->LayeredFramebuffer = 0;
-    this->LayeredDepth = 0;
-    this->LayeredContext = context;
-  }
-  if (!this->LayeredFramebuffer)
-  {
-    glGenFramebuffers(1, &this->LayeredFramebuffer);
-  }
-  if (!this->LayeredDepth || this->LayeredDepthSize != size)
-  {
-    if (!this->LayeredDepth)
-    {
-      glGenTextures(1, &this->LayeredDepth);
-    }
-    glBindTexture(GL_TEXTURE_CUBE_MAP, this->LayeredDepth);
-    for (int f = 0; f < 6; ++f)
-    {
-      glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, 0, GL_DEPTH_COMPONENT32F, size, size, 0,
-        GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
-    }
-    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
-    this->LayeredDepthSize = size;
-  }
-
-  state->PushFramebufferBindings();
-  state->vtkglBindFramebuffer(GL_FRAMEBUFFER, this->LayeredFramebuffer);
-  glFramebufferTexture(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, cube->GetHandle(), 0);
-  glFramebufferTexture(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, this->LayeredDepth, 0);
-  state->vtkglDrawBuffer(GL_COLOR_ATTACHMENT0);
-  const bool complete = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
-  bool ok = false;
-  if (complete)
-  {
-    // The vertex shader draws for face 0; the geometry shader takes face 0's
-    // clip space to each face's: P V_f V_0^-1 P^-1 (all faces share P).
-    const glm::dmat4 fromFirstClip = glm::inverse(faces[0].Projection * faces[0].View);
-    for (int f = 0; f < 6; ++f)
-    {
-      const glm::mat4 m(faces[f].Projection * faces[f].View * fromFirstClip);
-      std::copy(glm::value_ptr(m), glm::value_ptr(m) + 16, pass->FaceFromFirst[f]);
-    }
-    const glm::mat4 clipToView(glm::inverse(faces[0].Projection));
-    std::copy(glm::value_ptr(clipToView), glm::value_ptr(clipToView) + 16, pass->FaceClipToView);
-    pass->FaceSize = static_cast<float>(size);
-    pass->FaceRange =
-      pass->GetPackedCubeMaps() ? static_cast<float>(faces[0].Far * faces[0].Far) : 0.0f;
-    pass->LayeredFaces = true;
-
-    this->SetCamera(faces[0]);
-    vtkSmartPointer<vtkCamera> viewCamera = renderer->GetActiveCamera();
-    renderer->SetActiveCamera(this->LightCamera);
-    vtkOpenGLState::ScopedglClearColor clearColor(state);
-    const float far = pass->GetPackedCubeMaps() ? 1.0f : VTK_FLOAT_MAX;
-    state->vtkglClearColor(far, far, far, far);
-    ok = this->DrawProps(
-      s, pass, size, size, true, false, vtkSoftShadowPass::Stage::LightDistance, true);
-    renderer->SetActiveCamera(viewCamera);
-    pass->LayeredFaces = false;
-  }
-  glFramebufferTexture(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, 0, 0);
-  glFramebufferTexture(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, 0, 0);
-  state->PopFramebufferBindings();
-  if (!complete)
-  {
-    vtkGenericWarningMacro("Layered cube-map framebuffer incomplete: no point-light shadows.");
-  }
-  return ok;
-}
-
-//------------------------------------------------------------------------------
-bool vtkShadowMapManager::DrawDepth(const vtkRenderState* s, vtkSoftShadowPass* pass,
-  vtkTextureObject* target, bool allProps, bool bias, vtkSoftShadowPass::Stage stage,
-  const std::vector<vtkTextureObject*>& colourTargets)
-{
-  auto* context = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
-  if (!context || !target)
-  {
-    return false;
-  }
-  if (!this->DepthFramebuffer)
-  {
-    this->DepthFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-    this->DepthFramebuffer->SetContext(context);
-  }
-  context->GetState()->PushFramebufferBindings();
-  this->DepthFramebuffer->Bind();
-  this->DepthFramebuffer->AddDepthAttachment(target);
-  const auto colours = static_cast<unsigned int>(colourTargets.size());
-  for (unsigned int i = 0; i < colours; ++i)
-  {
-    this->DepthFramebuffer->AddColorAttachment(i, colourTargets[i]);
-  }
-  if (colours > 0)
-  {
-    this->DepthFramebuffer->ActivateDrawBuffers(colours);
-  }
-  else
-  {
-    this->DepthFramebuffer->DeactivateDrawBuffers();
-  }
-  vtkOpenGLState::ScopedglClearColor clearColor(context->GetState());
-  context->GetState()->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
-  pass->CameraPassTargets = static_cast<int>(colours);
-  const bool ok = this->DrawProps(s, pass, static_cast<int>(target->GetWidth()),
-    static_cast<int>(target->GetHeight()), allProps, bias, stage, colours > 0);
-  pass->CameraPassTargets = 0;
-  this->DepthFramebuffer->RemoveColorAttachments(colours);
-  this->DepthFramebuffer->RemoveDepthAttachment();
-  context->GetState()->PopFramebufferBindings();
-  return ok;
-}
-
-//------------------------------------------------------------------------------
-// Draws the props into the bound framebuffer with the pass in `stage`;
-// colour writes only when `colour` (cleared first).
-bool vtkShadowMapManager::DrawProps(const vtkRenderState* s, vtkSoftShadowPass* pass, int width,
-  int height, bool allProps, bool bias, vtkSoftShadowPass::Stage stage, bool colour)
-{
-  vtkRenderer* renderer = s->GetRenderer();
-  auto* context = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
-  vtkOpenGLState* state = context->GetState();
-
-  // Shadow casters include props outside the view: they may shadow what is in it.
-  std::vector<vtkProp*> props;
-  if (allProps)
-  {
-    vtkCollectionSimpleIterator it;
-    vtkPropCollection* viewProps = renderer->GetViewProps();
-    viewProps->InitTraversal(it);
-    while (vtkProp* prop = viewProps->GetNextProp(it))
-    {
-      if (prop->GetVisibility())
-      {
-        props.push_back(prop);
-      }
-    }
-  }
-  else
-  {
-    props.assign(s->GetPropArray(), s->GetPropArray() + s->GetPropArrayCount());
-  }
-
-  vtkOpenGLState::ScopedglViewport viewportSaver(state);
-  vtkOpenGLState::ScopedglScissor scissorSaver(state);
-  vtkOpenGLState::ScopedglEnableDisable scissorTest(state, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable blending(state, GL_BLEND);
-  vtkOpenGLState::ScopedglDepthMask depthMask(state);
-  vtkOpenGLState::ScopedglColorMask colorMask(state);
-
-  state->vtkglViewport(0, 0, width, height);
-  state->vtkglScissor(0, 0, width, height);
-  state->vtkglDisable(GL_SCISSOR_TEST);
-  state->vtkglDisable(GL_BLEND);
-  state->vtkglEnable(GL_DEPTH_TEST);
-  state->vtkglDepthMask(GL_TRUE);
-  state->vtkglColorMask(colour, colour, colour, colour);
-  state->vtkglClearDepth(1.0);
-  state->vtkglClear(GL_DEPTH_BUFFER_BIT | (colour ? GL_COLOR_BUFFER_BIT : 0));
-  if (bias)
-  {
-    // Slope-scaled bias: acne-free lit surfaces. PCF taps reach (r + 1)
-    // texels from the looked-up point (bilinear footprint included), so the
-    // slope term grows with the kernel. vtkOpenGLState does not track polygon
-    // offset: it is set and reset here directly.
-    const double reach = 1.0 + pass->GetPCFRadius();
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(static_cast<float>(pass->GetSlopeScaledBias() * reach),
-      static_cast<float>(pass->GetConstantBias()));
-  }
-
-  vtkRenderState depthState(renderer);
-  depthState.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
-  depthState.SetFrameBuffer(this->DepthFramebuffer);
-  pass->SetStage(stage);
-  pass->PreRender(&depthState);
-  for (vtkProp* prop : props)
-  {
-    prop->RenderOpaqueGeometry(renderer);
-  }
-  pass->PostRender(&depthState);
-  pass->SetStage(vtkSoftShadowPass::Stage::Idle);
-  if (bias)
-  {
-    glPolygonOffset(0.0f, 0.0f);
-    glDisable(GL_POLYGON_OFFSET_FILL);
-  }
-  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -636,28 +319,13 @@ void vtkShadowMapManager::ReleaseGraphicsResources(vtkWindow* w)
         map->ReleaseGraphicsResources(w);
       }
     }
+    for (auto& texture : light.Textures)
+    {
+      if (texture)
+      {
+        texture->ReleaseGraphicsResources(w);
+      }
+    }
   }
   this->Lights.clear();
-  if (this->CubeDepth)
-  {
-    this->CubeDepth->ReleaseGraphicsResources(w);
-    this->CubeDepth = nullptr;
-  }
-  // Raw objects of the layered path: the window's context is current here.
-  if (this->LayeredFramebuffer)
-  {
-    glDeleteFramebuffers(1, &this->LayeredFramebuffer);
-    this->LayeredFramebuffer = 0;
-  }
-  if (this->LayeredDepth)
-  {
-    glDeleteTextures(1, &this->LayeredDepth);
-    this->LayeredDepth = 0;
-  }
-  this->LayeredContext = nullptr;
-  if (this->DepthFramebuffer)
-  {
-    this->DepthFramebuffer->ReleaseGraphicsResources(w);
-    this->DepthFramebuffer = nullptr;
-  }
 }

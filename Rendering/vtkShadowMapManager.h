@@ -1,18 +1,19 @@
 /**
  * @class   vtkShadowMapManager
- * @brief   Owns every shadowed light's light-space frustum and depth map.
+ * @brief   Owns every shadowed light: its light-space frusta, its maps and
+ *          the technique's own per-light textures.
  *
- * Private to the framework. Update() decides (which lights cast shadows,
- * their frusta fitted to the scene), RenderDepth() only draws. Every
- * technique's first pass is a depth map drawn here; the reference technique
- * also draws maps from points sampled over the light.
+ * Part of the framework, data only: Update() decides which lights cast
+ * shadows and fits their frusta to the scene; the Allocate methods size
+ * their maps. It draws nothing: vtkShadowDrawer does, through these frusta
+ * into these maps.
  */
 
 #ifndef vtkShadowMapManager_h
 #define vtkShadowMapManager_h
 
 #include "vtkSmartPointer.h"
-#include "vtkSoftShadowPass.h" // for vtkSoftShadowPass::Stage
+#include "vtkSoftShadowsRenderingModule.h" // for export macro
 
 #include <glm/mat4x4.hpp> // for glm::dmat4
 #include <glm/vec3.hpp>   // for glm::dvec3
@@ -22,34 +23,32 @@
 #include <vector> // for std::vector
 
 class vtkLight;
-class vtkOpenGLCamera;
-class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
-class vtkRenderState;
 class vtkRenderer;
 class vtkShaderProgram;
-class vtkSoftShadowPass;
 class vtkTextureObject;
 class vtkWindow;
 
-class vtkShadowMapManager
+/// Where a light-space map looks from and what it covers.
+struct VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowFrustum
+{
+  glm::dvec3 Eye{ 0.0 };
+  glm::dvec3 Direction{ 0.0, 0.0, -1.0 }; ///< unit, from the light into the scene
+  glm::dvec3 Up{ 0.0, 1.0, 0.0 };
+  bool Parallel = false;
+  double Near = 0.1;
+  double Far = 1.0;
+  glm::dmat4 View{ 1.0 };       ///< world to light eye coordinates
+  glm::dmat4 Projection{ 1.0 }; ///< light eye to clip coordinates
+  glm::dmat4 WorldToMap{ 1.0 }; ///< world to [0,1]^3 map coordinates
+  /// World size of the whole map: x + y * (distance along Direction).
+  glm::dvec2 Footprint{ 0.0 };
+};
+
+class VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowMapManager
 {
 public:
-  /// Where a light-space map looks from and what it covers.
-  struct Frustum
-  {
-    glm::dvec3 Eye{ 0.0 };
-    glm::dvec3 Direction{ 0.0, 0.0, -1.0 }; ///< unit, from the light into the scene
-    glm::dvec3 Up{ 0.0, 1.0, 0.0 };
-    bool Parallel = false;
-    double Near = 0.1;
-    double Far = 1.0;
-    glm::dmat4 View{ 1.0 };       ///< world to light eye coordinates
-    glm::dmat4 Projection{ 1.0 }; ///< light eye to clip coordinates
-    glm::dmat4 WorldToMap{ 1.0 }; ///< world to [0,1]^3 map coordinates
-    /// World size of the whole map: x + y * (distance along Direction).
-    glm::dvec2 Footprint{ 0.0 };
-  };
+  using Frustum = vtkShadowFrustum;
 
   /// One shadowed light.
   struct Light
@@ -69,6 +68,9 @@ public:
     vtkSmartPointer<vtkTextureObject> DepthMap; ///< spot and directional lights
     std::array<Frustum, 6> Faces;               ///< point lights: +x -x +y -y +z -z
     vtkSmartPointer<vtkTextureObject> CubeMap;  ///< point lights: squared distances
+    /// The technique's own textures for this light (e.g. a distance map),
+    /// kept for the light's slot across frames and released with the maps.
+    std::vector<vtkSmartPointer<vtkTextureObject>> Textures;
   };
 
   vtkShadowMapManager();
@@ -104,35 +106,11 @@ public:
   void AllocateCubeMap(vtkOpenGLRenderWindow* context, Light& light, int size, bool packed);
 
   /**
-   * Draw the squared distance to `faces`' common eye of every visible opaque
-   * prop into the six faces of `cube` (Gerasimov, section 12.3.3): in one
-   * layered pass when the pass asks for SinglePassCubeMaps, else one pass a
-   * face as in the paper.
-   */
-  bool RenderDistanceCube(const vtkRenderState* s, vtkSoftShadowPass* pass,
-    const std::array<Frustum, 6>& faces, vtkTextureObject* cube);
-
-  /**
    * Make sure `light.DepthMap` is a `size` x `size` depth texture with
    * hardware comparison (sampler2DShadow), filtered bilinearly (2x2 PCF in
    * one tap) when `linear`.
    */
   void AllocateDepthMap(vtkOpenGLRenderWindow* context, Light& light, int size, bool linear);
-
-  /**
-   * Draw the depth of every visible opaque prop, as seen through `frustum`,
-   * into `target` (a depth texture). Slope-scaled bias is applied.
-   */
-  bool RenderDepth(const vtkRenderState* s, vtkSoftShadowPass* pass, const Frustum& frustum,
-    vtkTextureObject* target);
-
-  /**
-   * Draw the depth of the props of `s` through the renderer's own camera into
-   * `target` (a depth texture), and, with the technique's camera pass code,
-   * into `colourTargets` (cleared to 0 first). No bias.
-   */
-  bool RenderCameraDepth(const vtkRenderState* s, vtkSoftShadowPass* pass, vtkTextureObject* target,
-    const std::vector<vtkTextureObject*>& colourTargets);
 
   /**
    * Upload what shaders need of a frustum for lookups with normal offset
@@ -146,27 +124,10 @@ public:
 
 private:
   glm::dvec3 SceneCenter() const;
-  void SetCamera(const Frustum& frustum);
-  bool DrawProps(const vtkRenderState* s, vtkSoftShadowPass* pass, int width, int height,
-    bool allProps, bool bias, vtkSoftShadowPass::Stage stage, bool colour);
-  bool DrawDepth(const vtkRenderState* s, vtkSoftShadowPass* pass, vtkTextureObject* target,
-    bool allProps, bool bias, vtkSoftShadowPass::Stage stage,
-    const std::vector<vtkTextureObject*>& colourTargets = {});
 
   vtkRenderer* Renderer = nullptr; ///< of the last Update(), not owned
   std::vector<Light> Lights;
   double SceneBounds[6];
-  vtkSmartPointer<vtkOpenGLCamera> LightCamera;
-  vtkSmartPointer<vtkOpenGLFramebufferObject> DepthFramebuffer;
-  vtkSmartPointer<vtkTextureObject> CubeDepth; ///< z-buffer while drawing cube faces
-  // Single-pass cube maps: a layered framebuffer and a depth cube map, in raw
-  // OpenGL (VTK 9.1 has neither).
-  bool DrawLayeredCube(const vtkRenderState* s, vtkSoftShadowPass* pass,
-    const std::array<Frustum, 6>& faces, vtkTextureObject* cube);
-  unsigned int LayeredFramebuffer = 0;
-  unsigned int LayeredDepth = 0;
-  int LayeredDepthSize = 0;
-  vtkOpenGLRenderWindow* LayeredContext = nullptr;
 };
 
 #endif

@@ -11,8 +11,6 @@
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
-#include "vtkShadowMapManager.h"
-#include "vtkSoftShadowPass.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
@@ -89,14 +87,6 @@ bool vtkShadowScreenBuffers::Update(const vtkRenderState* s)
     }
   }
   return true;
-}
-
-//------------------------------------------------------------------------------
-bool vtkShadowScreenBuffers::RenderCameraDepth(const vtkRenderState* s, vtkSoftShadowPass* pass,
-  const std::vector<vtkTextureObject*>& colourTargets)
-{
-  return this->CameraDepth &&
-    pass->Maps->RenderCameraDepth(s, pass, this->CameraDepth, colourTargets);
 }
 
 //------------------------------------------------------------------------------

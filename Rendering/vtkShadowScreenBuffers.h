@@ -4,7 +4,7 @@
  *          one visibility texture per shadowed light, and full-screen passes
  *          that reconstruct each pixel's world position.
  *
- * Private to the framework. A technique's screen-space pass is a fragment
+ * Part of the framework. A technique's screen-space pass is a fragment
  * shader body given to CreateQuad(); it gets `vtkScreenDepth`,
  * `vtkScreenPixel()` and `vtkScreenPositionWC()` from
  * vtkShadowScreenCommonFS.glsl. Receivers read the visibility textures back
@@ -15,6 +15,7 @@
 #define vtkShadowScreenBuffers_h
 
 #include "vtkSmartPointer.h"
+#include "vtkSoftShadowsRenderingModule.h" // for export macro
 
 #include <functional> // for std::function
 #include <memory>     // for std::unique_ptr
@@ -26,11 +27,10 @@ class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkRenderState;
 class vtkShaderProgram;
-class vtkSoftShadowPass;
 class vtkTextureObject;
 class vtkWindow;
 
-class vtkShadowScreenBuffers
+class VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowScreenBuffers
 {
 public:
   vtkShadowScreenBuffers();
@@ -49,12 +49,11 @@ public:
   bool Update(const vtkRenderState* s);
 
   /**
-   * Draw the depth of the opaque props through the camera; fragments also
-   * write `colourTargets` (the buffers' size) when the technique gives camera
-   * pass code (vtkSoftShadowPass::GetCameraPassImplementation()).
+   * The camera depth of the opaque props, the buffers' size, which
+   * vtkSoftShadowPass::RenderCameraDepth() draws and screen-space passes
+   * read (`vtkScreenDepth`).
    */
-  bool RenderCameraDepth(const vtkRenderState* s, vtkSoftShadowPass* pass,
-    const std::vector<vtkTextureObject*>& colourTargets);
+  vtkTextureObject* GetCameraDepth() const { return this->CameraDepth; }
 
   int GetWidth() const { return this->Width; }
   int GetHeight() const { return this->Height; }

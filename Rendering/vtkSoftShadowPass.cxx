@@ -16,12 +16,19 @@
 #include "vtkRenderStepsPass.h"
 #include "vtkSequencePass.h"
 #include "vtkShaderProgram.h"
+#include "vtkShadowCasterRegistry.h"
+#include "vtkShadowCompute.h"
+#include "vtkShadowDepthStage.h"
+#include "vtkShadowDistanceStage.h"
+#include "vtkShadowDrawer.h"
 #include "vtkShadowMapManager.h"
+#include "vtkShadowMapperCode.h"
 #include "vtkShadowScreenBuffers.h"
+#include "vtkShadowShaderHooks.h"
+#include "vtkShadowStage.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
-#include "vtkShadowCubeLayersGS.h"
 #include "vtkShadowCubeLookupFS.h"
 #include "vtkShadowNormalOffsetFS.h"
 #include "vtkSoftShadowReceiverFS.h"
@@ -76,6 +83,13 @@ const char* const SurfaceCode =
   "  vec3 vtkShadowNormalWC = normalize(mat3(vtkShadowViewToWorld) *\n"
   "    cross(dFdx(vertexVCVSOutput.xyz), dFdy(vertexVCVSOutput.xyz)));\n";
 
+// The camera's view to world matrix, for the surface code.
+void SetViewToWorld(vtkShaderProgram* program, vtkRenderer* renderer)
+{
+  SetMatrix(program, "vtkShadowViewToWorld",
+    glm::inverse(ToGlm(renderer->GetActiveCamera()->GetModelViewTransformMatrix())));
+}
+
 std::string Indexed(const char* name, int i)
 {
   return std::string(name) + "[" + std::to_string(i) + "]";
@@ -83,9 +97,234 @@ std::string Indexed(const char* name, int i)
 }
 
 //------------------------------------------------------------------------------
+// The camera pass (RenderCameraDepth()): depth, and the technique's code on
+// every fragment the camera sees, writing its colour targets.
+class vtkSoftShadowPass::vtkCameraStage : public vtkShadowStage
+{
+public:
+  explicit vtkCameraStage(vtkSoftShadowPass* pass)
+    : Pass(pass)
+  {
+  }
+
+  void Begin(const vtkShadowDrawSetup& setup) override
+  {
+    this->Targets = static_cast<int>(setup.Colours.size());
+  }
+
+  void PreReplace(vtkShadowShaderSources& sources) override
+  {
+    using namespace vtkShadowMapperCode;
+    vtkShadowShaderSources::Before(sources.Fragment, LightDec, ShadowDec);
+    sources.Require(sources.Fragment, LightImpl,
+      std::string(ShadowImpl) + "\n  return;\n  " + LightImpl, "the camera pass");
+  }
+
+  void PostReplace(vtkShadowShaderSources& sources) override
+  {
+    // Without lighting the mapper declares no view-space position: such
+    // fragments write 0.
+    std::string dec, impl;
+    if (this->Targets > 0 && sources.IsLit())
+    {
+      dec = "uniform mat4 vtkShadowViewToWorld;\n" + this->Pass->GetCameraPassDeclarations();
+      impl = std::string(SurfaceCode) + this->Pass->GetCameraPassImplementation();
+    }
+    else
+    {
+      for (int i = 0; i < std::max(this->Targets, 1); ++i)
+      {
+        impl += "  gl_FragData[" + std::to_string(i) + "] = vec4(0.0);\n";
+      }
+    }
+    sources.Require(sources.Fragment, vtkShadowMapperCode::ShadowDec, dec, "the camera pass");
+    sources.Require(sources.Fragment, vtkShadowMapperCode::ShadowImpl, impl, "the camera pass");
+  }
+
+  void SetUniforms(vtkShaderProgram* program, vtkProp*) override
+  {
+    if (program->IsUniformUsed("vtkShadowViewToWorld"))
+    {
+      SetViewToWorld(program, this->Pass->Maps->GetRenderer());
+      this->Pass->SetCameraPassUniforms(program);
+    }
+  }
+
+private:
+  vtkSoftShadowPass* Pass;
+  int Targets = 0;
+};
+
+//------------------------------------------------------------------------------
+// The receivers, drawn by the delegate: tags are placed before the mapper
+// writes its lighting code, and filled after, once it is known whether the
+// shader has lighting at all; then each shadowed light's contribution is
+// scaled by its shadow factor.
+class vtkSoftShadowPass::vtkReceiverStage : public vtkShadowStage
+{
+public:
+  explicit vtkReceiverStage(vtkSoftShadowPass* pass)
+    : Pass(pass)
+  {
+  }
+
+  void PreReplace(vtkShadowShaderSources& sources) override
+  {
+    using namespace vtkShadowMapperCode;
+    if (this->Pass->UsesScreenSpace())
+    {
+      // textureGather (vtkShadowScreenVisibility) in the mappers' GLSL 1.50.
+      sources.AddFragmentExtension("GL_ARB_texture_gather");
+    }
+    // Shaders without lighting (no tags) are not shadowed: no word needed.
+    vtkShadowShaderSources::Before(sources.Fragment, LightDec, ShadowDec);
+    vtkShadowShaderSources::Before(sources.Fragment, LightImpl, ShadowImpl);
+  }
+
+  void PostReplace(vtkShadowShaderSources& sources) override;
+  void SetUniforms(vtkShaderProgram* program, vtkProp*) override;
+
+private:
+  vtkSoftShadowPass* Pass;
+};
+
+//------------------------------------------------------------------------------
+void vtkSoftShadowPass::vtkReceiverStage::PostReplace(vtkShadowShaderSources& sources)
+{
+  vtkSoftShadowPass* pass = this->Pass;
+  std::string& fragmentShader = sources.Fragment;
+  const auto& lights = pass->Maps->GetLights();
+  const bool lit = sources.IsLit();
+  const bool active = lit && !lights.empty();
+
+  std::string onlyVisibility = "1.0";
+  std::ostringstream dec, impl;
+  if (active)
+  {
+    const auto cubes = std::count_if(
+      lights.begin(), lights.end(), [](const vtkShadowMapManager::Light& l) { return l.Point; });
+    dec << "#define VTK_SHADOW_LIGHTS " << lights.size() << "\n"
+        << "#define VTK_SHADOW_MAPS " << lights.size() - cubes << "\n"
+        << "#define VTK_SHADOW_CUBES " << cubes << "\n";
+    if (pass->UsesScreenSpace())
+    {
+      dec << "#define VTK_SHADOW_SCREEN_SPACE\n";
+    }
+    dec << vtkShadowNormalOffsetFS << "\n"
+        << vtkShadowCubeLookupFS << "\n"
+        << vtkSoftShadowReceiverFS << "\n";
+    for (const auto& texture : pass->FrameReceiverTextures)
+    {
+      dec << "uniform " << texture.Sampler << " " << texture.Name << ";\n";
+    }
+    dec << pass->GetVisibilityDeclarations() << "\n";
+
+    impl << SurfaceCode;
+    if (pass->UsesScreenSpace())
+    {
+      impl << "  vtkShadowScreenSetup(vtkShadowPositionWC);\n";
+    }
+    for (size_t slot = 0; slot < lights.size(); ++slot)
+    {
+      const int n = lights[slot].ShaderIndex;
+      const int i = static_cast<int>(slot);
+      impl << "  float vtkShadowVisibility" << n << " = " << pass->GetVisibilityExpression(i)
+           << ";\n"
+           << "  float vtkShadowFactor" << n << " = mix(1.0, vtkShadowVisibility" << n
+           << ", vtkShadowAttenuation[" << i << "]);\n";
+      if (!vtkShadowMapperCode::ScaleLight(
+            fragmentShader, n, "vtkShadowFactor" + std::to_string(n)))
+      {
+        sources.AddMiss("light " + std::to_string(n) + "'s shadow (no lighting line to scale)");
+      }
+      if (lights[slot].SceneIndex == pass->ShadowOnlyLight)
+      {
+        onlyVisibility = "vtkShadowVisibility" + std::to_string(n);
+      }
+    }
+  }
+  // A lit shader must have kept the tags; others only lose them.
+  const std::string what = "the shadow term";
+  if (active)
+  {
+    sources.Require(fragmentShader, vtkShadowMapperCode::ShadowDec, dec.str(), what);
+    sources.Require(fragmentShader, vtkShadowMapperCode::ShadowImpl, impl.str(), what);
+  }
+  else
+  {
+    vtkShaderProgram::Substitute(fragmentShader, vtkShadowMapperCode::ShadowDec, "", false);
+    vtkShaderProgram::Substitute(fragmentShader, vtkShadowMapperCode::ShadowImpl, "", false);
+  }
+
+  if (pass->ShadowOnlyLight >= 0)
+  {
+    vtkShaderProgram::Substitute(fragmentShader, vtkShadowMapperCode::LightImpl,
+      "gl_FragData[0] = vec4(vec3(" + onlyVisibility + "), 1.0);\n  " +
+        vtkShadowMapperCode::LightImpl,
+      false);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkSoftShadowPass::vtkReceiverStage::SetUniforms(vtkShaderProgram* program, vtkProp*)
+{
+  vtkSoftShadowPass* pass = this->Pass;
+  if (!program->IsUniformUsed("vtkShadowViewToWorld"))
+  {
+    return;
+  }
+  SetViewToWorld(program, pass->Maps->GetRenderer());
+  program->SetUniformf("vtkShadowMapTexel", 1.0f / static_cast<float>(pass->MapSize));
+  program->SetUniformi("vtkShadowPCFRadius", pass->GetPCFRadius());
+  program->SetUniformi("vtkShadowPCFBilinear", pass->GetPCFBilinear() ? 1 : 0);
+  program->SetUniformf("vtkShadowNormalBias", static_cast<float>(pass->NormalBias));
+  program->SetUniformf("vtkShadowCubeTexel", 2.0f / static_cast<float>(pass->MapSize));
+  program->SetUniformf("vtkShadowDistanceBias", static_cast<float>(pass->DistanceBias));
+
+  const auto& lights = pass->Maps->GetLights();
+  for (size_t slot = 0; slot < lights.size(); ++slot)
+  {
+    const auto& light = lights[slot];
+    const int i = static_cast<int>(slot);
+    program->SetUniformf(
+      Indexed("vtkShadowAttenuation", i).c_str(), static_cast<float>(light.Attenuation));
+    if (light.Point)
+    {
+      program->SetUniformi(
+        Indexed("vtkShadowCube", light.MapIndex).c_str(), light.CubeMap->GetTextureUnit());
+      const float center[3] = { static_cast<float>(light.Position.x),
+        static_cast<float>(light.Position.y), static_cast<float>(light.Position.z) };
+      program->SetUniform3f(Indexed("vtkShadowCubeCenter", light.MapIndex).c_str(), center);
+      program->SetUniformf(Indexed("vtkShadowCubeRange", light.MapIndex).c_str(),
+        pass->PackedCubeMaps ? static_cast<float>(light.Faces[0].Far * light.Faces[0].Far) : 0.0f);
+      continue;
+    }
+    vtkShadowMapManager::SetFrustumUniforms(
+      program, "vtkShadow", "[" + std::to_string(i) + "]", light.Map, pass->MapSize);
+    program->SetUniformi(
+      Indexed("vtkShadowMap", light.MapIndex).c_str(), light.DepthMap->GetTextureUnit());
+  }
+  if (pass->UsesScreenSpace())
+  {
+    pass->Screen->SetUniforms(program, static_cast<int>(lights.size()));
+  }
+  for (const auto& texture : pass->FrameReceiverTextures)
+  {
+    program->SetUniformi(texture.Name.c_str(), texture.Texture->GetTextureUnit());
+  }
+  pass->SetVisibilityUniforms(program);
+}
+
+//------------------------------------------------------------------------------
 vtkSoftShadowPass::vtkSoftShadowPass()
-  : Maps(new vtkShadowMapManager)
+  : Casters(new vtkShadowCasterRegistry)
+  , Maps(new vtkShadowMapManager)
   , Screen(new vtkShadowScreenBuffers)
+  , Drawer(new vtkShadowDrawer(*Casters))
+  , DepthStage(new vtkShadowDepthStage)
+  , DistanceStage(new vtkShadowDistanceStage)
+  , CameraStage(new vtkCameraStage(this))
+  , ReceiverStage(new vtkReceiverStage(this))
 {
   vtkNew<vtkRenderStepsPass> steps;
   this->SetDelegatePass(steps);
@@ -135,22 +374,6 @@ int vtkSoftShadowPass::GetNumberOfShadowedLights() const
 }
 
 //------------------------------------------------------------------------------
-void vtkSoftShadowPass::SetStage(Stage stage)
-{
-  if (stage != this->CurrentStage)
-  {
-    this->CurrentStage = stage;
-    this->StageTime.Modified();
-  }
-}
-
-//------------------------------------------------------------------------------
-vtkMTimeType vtkSoftShadowPass::GetShaderStageMTime()
-{
-  return this->StageTime;
-}
-
-//------------------------------------------------------------------------------
 void vtkSoftShadowPass::Render(const vtkRenderState* s)
 {
   vtkOpenGLClearErrorMacro();
@@ -170,8 +393,9 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
     return;
   }
 
-  // 1. Decide: which lights cast shadows, and their frusta.
+  // 1. Decide: which lights cast shadows, and their frusta; what casts.
   this->Maps->Update(renderer);
+  this->Casters->Update(renderer);
   auto& shadowed = this->Maps->GetLights();
   if (!this->SupportsPointLights())
   {
@@ -223,6 +447,15 @@ void vtkSoftShadowPass::RenderReceivers(const vtkRenderState* s, bool screenSpac
   {
     this->Screen->ActivateTextures();
   }
+  this->FrameReceiverTextures.clear();
+  if (!shadowed.empty())
+  {
+    this->FrameReceiverTextures = this->GetReceiverTextures();
+  }
+  for (auto& texture : this->FrameReceiverTextures)
+  {
+    texture.Texture->Activate();
+  }
 
   // Cube maps are looked up across faces: filter across their seams.
   vtkOpenGLState* state =
@@ -248,17 +481,22 @@ void vtkSoftShadowPass::RenderReceivers(const vtkRenderState* s, bool screenSpac
     steps->SetOpaquePass(sequence);
   }
 
-  this->SetStage(Stage::Receivers);
-  this->PreRender(s);
+  vtkShadowShaderHooks* hooks = this->Drawer->GetHooks();
+  hooks->SetStage(this->ReceiverStage.get());
+  hooks->Attach(s);
   this->DelegatePass->Render(s);
   this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
-  this->PostRender(s);
-  this->SetStage(Stage::Idle);
+  hooks->Detach(s);
+  hooks->SetStage(nullptr);
   if (prePass)
   {
     steps->SetOpaquePass(opaque);
   }
 
+  for (auto& texture : this->FrameReceiverTextures)
+  {
+    texture.Texture->Deactivate();
+  }
   if (screenSpace)
   {
     this->Screen->DeactivateTextures();
@@ -267,6 +505,54 @@ void vtkSoftShadowPass::RenderReceivers(const vtkRenderState* s, bool screenSpac
   {
     (light.Point ? light.CubeMap : light.DepthMap)->Deactivate();
   }
+}
+
+//------------------------------------------------------------------------------
+bool vtkSoftShadowPass::Draw(const vtkRenderState* s, const vtkShadowDrawSetup& setup)
+{
+  return this->Drawer->Draw(s, setup);
+}
+
+//------------------------------------------------------------------------------
+bool vtkSoftShadowPass::RenderDepthMap(
+  const vtkRenderState* s, const vtkShadowFrustum& frustum, vtkTextureObject* target)
+{
+  vtkShadowDrawSetup setup;
+  setup.View = &frustum;
+  setup.Depth = target;
+  setup.Stage = this->DepthStage.get();
+  // Slope-scaled bias: acne-free lit surfaces. PCF taps reach (r + 1)
+  // texels from the looked-up point (bilinear footprint included), so the
+  // slope term grows with the kernel.
+  setup.SlopeBias = this->SlopeScaledBias * (1.0 + this->GetPCFRadius());
+  setup.ConstantBias = this->ConstantBias;
+  return this->Drawer->Draw(s, setup);
+}
+
+//------------------------------------------------------------------------------
+bool vtkSoftShadowPass::RenderDistanceCube(
+  const vtkRenderState* s, const std::array<vtkShadowFrustum, 6>& faces, vtkTextureObject* cube)
+{
+  vtkShadowDrawSetup setup;
+  setup.Faces = &faces;
+  setup.Colours = { cube };
+  // Nothing drawn is infinitely far (packed: the largest value): lit.
+  const float far = this->PackedCubeMaps ? 1.0f : VTK_FLOAT_MAX;
+  std::fill(setup.ClearColour, setup.ClearColour + 4, far);
+  this->DistanceStage->SetPacked(this->PackedCubeMaps);
+  setup.Stage = this->DistanceStage.get();
+  if (this->SinglePassCubeMaps)
+  {
+    return this->Drawer->Draw(s, setup); // all six faces, layered
+  }
+  for (setup.CubeFace = 0; setup.CubeFace < 6; ++setup.CubeFace)
+  {
+    if (!this->Drawer->Draw(s, setup))
+    {
+      return false;
+    }
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -279,14 +565,14 @@ bool vtkSoftShadowPass::RenderLightDepthMaps(const vtkRenderState* s, bool linea
     if (light.Point)
     {
       this->Maps->AllocateCubeMap(context, light, this->MapSize, this->PackedCubeMaps);
-      if (!this->Maps->RenderDistanceCube(s, this, light.Faces, light.CubeMap))
+      if (!this->RenderDistanceCube(s, light.Faces, light.CubeMap))
       {
         return false;
       }
       continue;
     }
     this->Maps->AllocateDepthMap(context, light, this->MapSize, linear);
-    if (!this->Maps->RenderDepth(s, this, light.Map, light.DepthMap))
+    if (!this->RenderDepthMap(s, light.Map, light.DepthMap))
     {
       return false;
     }
@@ -306,13 +592,18 @@ bool vtkSoftShadowPass::RenderCameraDepth(
     this->UpdateLightGeometry(s->GetRenderer());
     this->UpdateLights(s->GetRenderer());
   }
-  return this->Screen->RenderCameraDepth(s, this, targets);
+  vtkShadowDrawSetup setup;
+  setup.Depth = this->Screen->GetCameraDepth();
+  setup.Colours = targets;
+  setup.Draw = vtkShadowDrawSetup::Props::Camera;
+  setup.Stage = this->CameraStage.get();
+  return setup.Depth && this->Drawer->Draw(s, setup);
 }
 
 //------------------------------------------------------------------------------
 void vtkSoftShadowPass::RenderDepthPrePass(const vtkRenderState* s)
 {
-  // The props carry this pass already (receivers): only the stage changes,
+  // The props carry the hooks already (receivers): only the stage changes,
   // to the shading-free depth shaders, then back.
   vtkOpenGLState* state =
     vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow())->GetState();
@@ -320,12 +611,30 @@ void vtkSoftShadowPass::RenderDepthPrePass(const vtkRenderState* s)
   vtkOpenGLState::ScopedglDepthMask depthMask(state);
   state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   state->vtkglDepthMask(GL_TRUE);
-  this->SetStage(Stage::LightDepth);
+  vtkShadowShaderHooks* hooks = this->Drawer->GetHooks();
+  hooks->SetStage(this->DepthStage.get());
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
     s->GetPropArray()[i]->RenderOpaqueGeometry(s->GetRenderer());
   }
-  this->SetStage(Stage::Receivers);
+  hooks->SetStage(this->ReceiverStage.get());
+}
+
+//------------------------------------------------------------------------------
+bool vtkSoftShadowPass::CheckCompute(vtkOpenGLRenderWindow* context)
+{
+  std::string missing;
+  if (vtkShadowCompute::IsSupported(context, &missing))
+  {
+    return true;
+  }
+  if (!this->ComputeReported)
+  {
+    vtkErrorMacro(<< this->GetClassName() << " needs OpenGL 4.3 compute, and this context lacks "
+                  << missing << ": drawing without its shadows.");
+    this->ComputeReported = true;
+  }
+  return false;
 }
 
 //------------------------------------------------------------------------------
@@ -350,245 +659,12 @@ std::string vtkSoftShadowPass::GetVisibilityExpression(int slot)
 }
 
 //------------------------------------------------------------------------------
-// Receivers: tags are placed before the mapper writes its lighting code, and
-// filled after, once it is known whether the shader has lighting at all.
-bool vtkSoftShadowPass::PreReplaceShaderValues(std::string&, std::string& geometryShader,
-  std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
-{
-  switch (this->CurrentStage)
-  {
-    case Stage::LightDepth:
-      // Depth only: skip all shading. Clipping and depth code come earlier.
-      vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Impl",
-        "gl_FragData[0] = vec4(1.0);\n  return;\n  //VTK::Light::Impl", false);
-      break;
-    case Stage::LightDistance:
-      if (this->LayeredFaces)
-      {
-        if (geometryShader.empty())
-        {
-          geometryShader = vtkShadowCubeLayersGS;
-        }
-        else if (this->LayeredFallbackProps.insert(prop).second)
-        {
-          // Edges or wide lines already use the one geometry shader slot.
-          vtkWarningMacro("A prop drawn with its own geometry shader (edges or wide lines) casts "
-                          "into one cube face only with single-pass cube maps; turn "
-                          "SinglePassCubeMaps off for such scenes.");
-        }
-      }
-      // Squared distance to the face's eye (the light) from the fragment's
-      // window position: independent of the mapper's lighting varyings.
-      // Packed into RGBA8 over the face's far distance squared when asked.
-      vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Dec",
-        std::string(vtkShadowCubeLookupFS) +
-          "\nuniform mat4 vtkShadowFaceClipToView;\nuniform float vtkShadowFaceSize;\n"
-          "uniform float vtkShadowFaceRange;\n//VTK::Light::Dec",
-        false);
-      vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Impl",
-        "vec4 vtkShadowFaceView = vtkShadowFaceClipToView *\n"
-        "    vec4(gl_FragCoord.xy / vtkShadowFaceSize * 2.0 - 1.0, gl_FragCoord.z * 2.0 - 1.0, "
-        "1.0);\n"
-        "  vtkShadowFaceView.xyz /= vtkShadowFaceView.w;\n"
-        "  float vtkShadowDistance2 = dot(vtkShadowFaceView.xyz, vtkShadowFaceView.xyz);\n"
-        "  gl_FragData[0] = vtkShadowFaceRange > 0.0\n"
-        "    ? vtkShadowPackDistance(min(vtkShadowDistance2 / vtkShadowFaceRange, 0.9999))\n"
-        "    : vec4(vtkShadowDistance2);\n"
-        "  return;\n  //VTK::Light::Impl",
-        false);
-      break;
-    case Stage::CameraDepth:
-      vtkShaderProgram::Substitute(
-        fragmentShader, "//VTK::Light::Dec", "//VTK::SoftShadow::Dec\n//VTK::Light::Dec", false);
-      vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Impl",
-        "//VTK::SoftShadow::Impl\n  return;\n  //VTK::Light::Impl", false);
-      break;
-    case Stage::Receivers:
-      if (this->UsesScreenSpace())
-      {
-        // textureGather (vtkShadowScreenVisibility) in the mappers' GLSL 1.50.
-        vtkShaderProgram::Substitute(fragmentShader, "//VTK::System::Dec",
-          "//VTK::System::Dec\n#extension GL_ARB_texture_gather : enable", false);
-      }
-      vtkShaderProgram::Substitute(
-        fragmentShader, "//VTK::Light::Dec", "//VTK::SoftShadow::Dec\n//VTK::Light::Dec", false);
-      vtkShaderProgram::Substitute(
-        fragmentShader, "//VTK::Light::Impl", "//VTK::SoftShadow::Impl\n//VTK::Light::Impl", false);
-      break;
-    case Stage::Idle:
-      break;
-  }
-  return true;
-}
-
-//------------------------------------------------------------------------------
-bool vtkSoftShadowPass::PostReplaceShaderValues(
-  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
-{
-  // Without lighting the mapper declares no view-space position: nothing to
-  // shadow, and such fragments count as lit.
-  const bool lit = fragmentShader.find("vertexVCVSOutput") != std::string::npos;
-  if (this->CurrentStage == Stage::CameraDepth)
-  {
-    std::string dec, impl;
-    if (this->CameraPassTargets > 0 && lit)
-    {
-      dec = "uniform mat4 vtkShadowViewToWorld;\n" + this->GetCameraPassDeclarations();
-      impl = std::string(SurfaceCode) + this->GetCameraPassImplementation();
-    }
-    else
-    {
-      for (int i = 0; i < std::max(this->CameraPassTargets, 1); ++i)
-      {
-        impl += "  gl_FragData[" + std::to_string(i) + "] = vec4(0.0);\n";
-      }
-    }
-    vtkShaderProgram::Substitute(fragmentShader, "//VTK::SoftShadow::Dec", dec, false);
-    vtkShaderProgram::Substitute(fragmentShader, "//VTK::SoftShadow::Impl", impl, false);
-    return true;
-  }
-  if (this->CurrentStage != Stage::Receivers)
-  {
-    return true;
-  }
-  const auto& lights = this->Maps->GetLights();
-  const bool active = lit && !lights.empty();
-
-  std::string onlyVisibility = "1.0";
-  std::ostringstream dec, impl;
-  if (active)
-  {
-    const auto cubes = std::count_if(
-      lights.begin(), lights.end(), [](const vtkShadowMapManager::Light& l) { return l.Point; });
-    dec << "#define VTK_SHADOW_LIGHTS " << lights.size() << "\n"
-        << "#define VTK_SHADOW_MAPS " << lights.size() - cubes << "\n"
-        << "#define VTK_SHADOW_CUBES " << cubes << "\n";
-    if (this->UsesScreenSpace())
-    {
-      dec << "#define VTK_SHADOW_SCREEN_SPACE\n";
-    }
-    dec << vtkShadowNormalOffsetFS << "\n"
-        << vtkShadowCubeLookupFS << "\n"
-        << vtkSoftShadowReceiverFS << "\n"
-        << this->GetVisibilityDeclarations() << "\n";
-
-    impl << SurfaceCode;
-    if (this->UsesScreenSpace())
-    {
-      impl << "  vtkShadowScreenSetup(vtkShadowPositionWC);\n";
-    }
-    for (size_t slot = 0; slot < lights.size(); ++slot)
-    {
-      const int n = lights[slot].ShaderIndex;
-      const int i = static_cast<int>(slot);
-      impl << "  float vtkShadowVisibility" << n << " = " << this->GetVisibilityExpression(i)
-           << ";\n"
-           << "  float vtkShadowFactor" << n << " = mix(1.0, vtkShadowVisibility" << n
-           << ", vtkShadowAttenuation[" << i << "]);\n";
-
-      // Scale the light's contribution: Phong diffuse and specular, PBR
-      // radiance (directional and positional forms).
-      const std::string color = "lightColor" + std::to_string(n);
-      const std::string factor = "vtkShadowFactor" + std::to_string(n);
-      vtkShaderProgram::Substitute(fragmentShader, "diffuse += (df * " + color + ");",
-        "diffuse += (df * " + factor + " * " + color + ");", false);
-      vtkShaderProgram::Substitute(fragmentShader, "specular += (sf * " + color + ");",
-        "specular += (sf * " + factor + " * " + color + ");", false);
-      vtkShaderProgram::Substitute(fragmentShader, "radiance = " + color + ";",
-        "radiance = " + factor + " * " + color + ";", false);
-      vtkShaderProgram::Substitute(fragmentShader, "radiance = " + color + " * attenuation;",
-        "radiance = " + factor + " * " + color + " * attenuation;", false);
-
-      if (lights[slot].SceneIndex == this->ShadowOnlyLight)
-      {
-        onlyVisibility = "vtkShadowVisibility" + std::to_string(n);
-      }
-    }
-  }
-  vtkShaderProgram::Substitute(fragmentShader, "//VTK::SoftShadow::Dec", dec.str(), false);
-  vtkShaderProgram::Substitute(fragmentShader, "//VTK::SoftShadow::Impl", impl.str(), false);
-
-  if (this->ShadowOnlyLight >= 0)
-  {
-    vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Impl",
-      "gl_FragData[0] = vec4(vec3(" + onlyVisibility + "), 1.0);\n  //VTK::Light::Impl", false);
-  }
-  return true;
-}
-
-//------------------------------------------------------------------------------
-bool vtkSoftShadowPass::SetShaderParameters(
-  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
-{
-  if (this->CurrentStage == Stage::LightDistance)
-  {
-    program->SetUniformMatrix4x4("vtkShadowFaceClipToView", this->FaceClipToView);
-    program->SetUniformf("vtkShadowFaceSize", this->FaceSize);
-    program->SetUniformf("vtkShadowFaceRange", this->FaceRange);
-    if (this->LayeredFaces)
-    {
-      program->SetUniformMatrix4x4v("vtkShadowFaceFromFirst", 6, &this->FaceFromFirst[0][0]);
-    }
-    return true;
-  }
-  const bool camera = this->CurrentStage == Stage::CameraDepth;
-  if (!(camera || this->CurrentStage == Stage::Receivers) ||
-    !program->IsUniformUsed("vtkShadowViewToWorld"))
-  {
-    return true;
-  }
-  vtkRenderer* renderer = this->Maps->GetRenderer();
-  SetMatrix(program, "vtkShadowViewToWorld",
-    glm::inverse(ToGlm(renderer->GetActiveCamera()->GetModelViewTransformMatrix())));
-  if (camera)
-  {
-    this->SetCameraPassUniforms(program);
-    return true;
-  }
-  program->SetUniformf("vtkShadowMapTexel", 1.0f / static_cast<float>(this->MapSize));
-  program->SetUniformi("vtkShadowPCFRadius", this->GetPCFRadius());
-  program->SetUniformi("vtkShadowPCFBilinear", this->GetPCFBilinear() ? 1 : 0);
-  program->SetUniformf("vtkShadowNormalBias", static_cast<float>(this->NormalBias));
-  program->SetUniformf("vtkShadowCubeTexel", 2.0f / static_cast<float>(this->MapSize));
-  program->SetUniformf("vtkShadowDistanceBias", static_cast<float>(this->DistanceBias));
-
-  const auto& lights = this->Maps->GetLights();
-  for (size_t slot = 0; slot < lights.size(); ++slot)
-  {
-    const auto& light = lights[slot];
-    const int i = static_cast<int>(slot);
-    program->SetUniformf(
-      Indexed("vtkShadowAttenuation", i).c_str(), static_cast<float>(light.Attenuation));
-    if (light.Point)
-    {
-      program->SetUniformi(
-        Indexed("vtkShadowCube", light.MapIndex).c_str(), light.CubeMap->GetTextureUnit());
-      const float center[3] = { static_cast<float>(light.Position.x),
-        static_cast<float>(light.Position.y), static_cast<float>(light.Position.z) };
-      program->SetUniform3f(Indexed("vtkShadowCubeCenter", light.MapIndex).c_str(), center);
-      program->SetUniformf(Indexed("vtkShadowCubeRange", light.MapIndex).c_str(),
-        this->PackedCubeMaps ? static_cast<float>(light.Faces[0].Far * light.Faces[0].Far) : 0.0f);
-      continue;
-    }
-    vtkShadowMapManager::SetFrustumUniforms(
-      program, "vtkShadow", "[" + std::to_string(i) + "]", light.Map, this->MapSize);
-    program->SetUniformi(
-      Indexed("vtkShadowMap", light.MapIndex).c_str(), light.DepthMap->GetTextureUnit());
-  }
-  if (this->UsesScreenSpace())
-  {
-    this->Screen->SetUniforms(program, static_cast<int>(lights.size()));
-  }
-  this->SetVisibilityUniforms(program);
-  return true;
-}
-
-//------------------------------------------------------------------------------
 void vtkSoftShadowPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);
   this->Maps->ReleaseGraphicsResources(w);
   this->Screen->ReleaseGraphicsResources(w);
+  this->Drawer->ReleaseGraphicsResources(w);
   if (this->DelegatePass)
   {
     this->DelegatePass->ReleaseGraphicsResources(w);

@@ -39,8 +39,8 @@
 #include "vtkOpenGLRenderPass.h"
 #include "vtkSoftShadowsRenderingModule.h" // for export macro
 
+#include <array>  // for std::array
 #include <memory> // for std::unique_ptr
-#include <set>    // for std::set
 #include <string> // for std::string
 #include <vector> // for std::vector
 
@@ -48,8 +48,14 @@ class vtkInformationDoubleKey;
 class vtkLight;
 class vtkOpenGLRenderWindow;
 class vtkRenderer;
+class vtkShadowCasterRegistry;
+class vtkShadowDepthStage;
+class vtkShadowDistanceStage;
+class vtkShadowDrawer;
 class vtkShadowMapManager;
 class vtkShadowScreenBuffers;
+struct vtkShadowDrawSetup;
+struct vtkShadowFrustum;
 class vtkTextureObject;
 
 class VTKSOFTSHADOWSRENDERING_EXPORT vtkSoftShadowPass : public vtkOpenGLRenderPass
@@ -171,14 +177,6 @@ public:
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
-  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
-    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
-  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
-    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
-  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
-    vtkOpenGLVertexArrayObject* vao = nullptr) override;
-  vtkMTimeType GetShaderStageMTime() override;
-
 protected:
   vtkSoftShadowPass();
   ~vtkSoftShadowPass() override;
@@ -191,9 +189,37 @@ protected:
 
   /**
    * Helper for RenderShadowMaps(): draw every shadowed light's own depth map
-   * at MapSize, filtered bilinearly by the hardware when `linear`.
+   * at MapSize, filtered bilinearly by the hardware when `linear`, or, for
+   * point lights, its cube map of squared distances.
    */
   bool RenderLightDepthMaps(const vtkRenderState* s, bool linear);
+
+  ///@{
+  /**
+   * The framework's light-space draws, for techniques that draw more maps
+   * than the light's own (e.g. from points sampled over it): the casters'
+   * depth through `frustum` into `target` with the slope-scaled and constant
+   * biases; the casters' squared distances into the six faces of `cube`
+   * (layered when SinglePassCubeMaps).
+   */
+  bool RenderDepthMap(
+    const vtkRenderState* s, const vtkShadowFrustum& frustum, vtkTextureObject* target);
+  bool RenderDistanceCube(
+    const vtkRenderState* s, const std::array<vtkShadowFrustum, 6>& faces, vtkTextureObject* cube);
+  ///@}
+
+  /**
+   * Draw as `setup` says (vtkShadowDrawer): any frustum, target, blending
+   * and stage, with the scene's props and the technique's own geometry.
+   */
+  bool Draw(const vtkRenderState* s, const vtkShadowDrawSetup& setup);
+
+  /**
+   * Whether the context has OpenGL 4.3 compute (vtkShadowCompute); if not,
+   * reports a clear error once and returns false: the technique then draws
+   * without its shadows.
+   */
+  bool CheckCompute(vtkOpenGLRenderWindow* context);
 
   /**
    * Step 3, optional: screen-space passes. Techniques that override it return
@@ -262,6 +288,22 @@ protected:
    */
   virtual void SetVisibilityUniforms(vtkShaderProgram*) {}
 
+  /// A texture the receivers read: the framework declares it (`uniform
+  /// <Sampler> <Name>;`), binds it while they draw and sets its unit.
+  struct ReceiverTexture
+  {
+    std::string Name;
+    std::string Sampler; ///< e.g. "sampler2D"
+    vtkTextureObject* Texture;
+  };
+
+  /**
+   * The technique's textures for this frame's receivers, per light (e.g.
+   * from vtkShadowMapManager::Light::Textures) or per frame; their names must
+   * differ. Default: none.
+   */
+  virtual std::vector<ReceiverTexture> GetReceiverTextures() { return {}; }
+
   /**
    * Radius, in texels, of the square PCF kernel the framework's hard lookup
    * uses in receivers (0: one hardware-filtered tap).
@@ -274,19 +316,6 @@ protected:
    */
   bool GetPCFBilinear() const { return this->LinearMaps; }
 
-  /**
-   * Shader stage changes force mappers to rebuild their shader source.
-   */
-  enum class Stage
-  {
-    Idle,
-    LightDepth,    ///< drawing depth from a light (or before receivers): no shading
-    CameraDepth,   ///< drawing the camera depth for screen-space passes
-    LightDistance, ///< drawing squared distances to a point light: cube faces
-    Receivers      ///< final drawing with the shadow term
-  };
-  void SetStage(Stage stage);
-
   int MapSize = 1024;
   double SlopeScaledBias = 2.0;
   double ConstantBias = 4.0;
@@ -298,30 +327,31 @@ protected:
   int ShadowOnlyLight = -1;
   vtkRenderPass* DelegatePass = nullptr;
 
+  // The framework: what a frame casts, its lights and maps, its screen
+  // buffers, the one place that draws, and the framework's depth stage.
+  std::unique_ptr<vtkShadowCasterRegistry> Casters;
   std::unique_ptr<vtkShadowMapManager> Maps;
   std::unique_ptr<vtkShadowScreenBuffers> Screen;
+  std::unique_ptr<vtkShadowDrawer> Drawer;
+  std::unique_ptr<vtkShadowDepthStage> DepthStage;
 
 private:
   vtkSoftShadowPass(const vtkSoftShadowPass&) = delete;
   void operator=(const vtkSoftShadowPass&) = delete;
 
-  friend class vtkShadowMapManager;
-  friend class vtkShadowScreenBuffers;
-
-  Stage CurrentStage = Stage::Idle;
-  int CameraPassTargets = 0;  ///< CameraDepth: colour targets the fragments write
-  float FaceClipToView[16];   ///< LightDistance: the face's inverse projection
-  float FaceSize = 1.0f;      ///< LightDistance: the face's width in texels
-  float FaceRange = 0.0f;     ///< LightDistance: 0, or the packing range (far^2)
-  bool LayeredFaces = false;  ///< LightDistance: all six faces at once
-  float FaceFromFirst[6][16]; ///< LayeredFaces: face 0's clip space to face f's
-  bool LinearMaps = false;
-  vtkTimeStamp StageTime;
-  bool PointLightReported = false;
+  class vtkCameraStage;
+  class vtkReceiverStage;
   class vtkDepthPrePassStep;
+  std::unique_ptr<vtkShadowDistanceStage> DistanceStage;
+  std::unique_ptr<vtkCameraStage> CameraStage;
+  std::unique_ptr<vtkReceiverStage> ReceiverStage;
+  std::vector<ReceiverTexture>
+    FrameReceiverTextures; ///< GetReceiverTextures() while receivers draw
+  bool LinearMaps = false;
+  bool PointLightReported = false;
+  bool ComputeReported = false;
   void RenderDepthPrePass(const vtkRenderState* s);
   void RenderReceivers(const vtkRenderState* s, bool screenSpace);
-  std::set<vtkProp*> LayeredFallbackProps; ///< props already warned about, not owned
 };
 
 #endif

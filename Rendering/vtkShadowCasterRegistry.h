@@ -1,0 +1,129 @@
+/**
+ * @class   vtkShadowCasterRegistry
+ * @brief   Every shadow caster of a frame: the visible props, and the
+ *          polydata VTK's OpenGL polydata mappers draw for them, with their
+ *          model matrices.
+ *
+ * Part of the framework, refreshed at the start of every frame
+ * (vtkSoftShadowPass::Render()). GetProps() are what light-space draws
+ * render through VTK's mappers; GetCasters() give a technique each
+ * polydata (each visible block of a vtkCompositePolyDataMapper2) to derive
+ * its own data from (a topology aware mesh, an edge table, a silhouette
+ * tree), cached with vtkShadowCasterCache until the data changes, and
+ * lights expressed in the caster's model space for per-mesh filters such as
+ * vtkLightSilhouetteFilter. Glyph mappers' instances are not reached: their
+ * props still cast through GetProps().
+ */
+
+#ifndef vtkShadowCasterRegistry_h
+#define vtkShadowCasterRegistry_h
+
+#include "vtkSoftShadowsRenderingModule.h" // for export macro
+#include "vtkType.h"                       // for vtkMTimeType
+#include "vtkWeakPointer.h"                // for vtkWeakPointer
+
+#include <glm/mat4x4.hpp> // for glm::dmat4
+#include <glm/vec3.hpp>   // for glm::dvec3
+
+#include <functional> // for std::function
+#include <map>        // for std::map
+#include <vector>     // for std::vector
+
+class vtkActor;
+class vtkPolyData;
+class vtkProp;
+class vtkRenderer;
+
+/// One polydata drawn by a visible actor.
+struct VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowCaster
+{
+  vtkProp* Prop = nullptr;        ///< not owned; valid during a frame
+  vtkActor* Actor = nullptr;      ///< the prop as an actor
+  vtkPolyData* Data = nullptr;    ///< the mapper's input, or one block of it
+  unsigned int FlatIndex = 0;     ///< the block's flat index in a composite input; 0 otherwise
+  glm::dmat4 ModelToWorld{ 1.0 }; ///< the actor's matrix
+  glm::dmat4 WorldToModel{ 1.0 };
+  bool Opaque = true; ///< the actor is drawn in the opaque pass
+
+  /// A world point (a light's position) in this caster's model coordinates.
+  glm::dvec3 PointToModel(const glm::dvec3& world) const;
+  /// A world direction (a directional light's) in model coordinates, unit length.
+  glm::dvec3 DirectionToModel(const glm::dvec3& world) const;
+};
+
+class VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowCasterRegistry
+{
+public:
+  /// Collect this frame's casters from the renderer's visible props.
+  void Update(vtkRenderer* renderer);
+
+  /// Every visible prop, in the view or not.
+  const std::vector<vtkProp*>& GetProps() const { return this->Props; }
+  /// The polydata of the visible actors drawn by polydata mappers.
+  const std::vector<vtkShadowCaster>& GetCasters() const { return this->Casters; }
+
+private:
+  std::vector<vtkProp*> Props;
+  std::vector<vtkShadowCaster> Casters;
+};
+
+/**
+ * What a technique derives from each caster's polydata, kept until the
+ * data is modified or released: Get() rebuilds an entry only when its
+ * polydata is new, gone and replaced, or has a newer MTime.
+ */
+template <typename T>
+class vtkShadowCasterCache
+{
+public:
+  using Builder = std::function<void(vtkPolyData* data, T& value)>;
+
+  /// The value for `caster`'s data, built with `build` if needed.
+  T& Get(const vtkShadowCaster& caster, const Builder& build);
+
+  /// Drop the entries of data that no longer exists.
+  void Prune();
+  void Clear() { this->Entries.clear(); }
+  size_t GetNumberOfEntries() const { return this->Entries.size(); }
+  /// How many times Get() has built a value, in all.
+  int GetNumberOfBuilds() const { return this->Builds; }
+
+private:
+  struct Entry
+  {
+    vtkWeakPointer<vtkPolyData> Data;
+    vtkMTimeType Time = 0;
+    T Value;
+  };
+  std::map<const vtkPolyData*, Entry> Entries;
+  int Builds = 0;
+};
+
+#include "vtkPolyData.h" // for vtkPolyData::GetMTime, in the template
+
+template <typename T>
+T& vtkShadowCasterCache<T>::Get(const vtkShadowCaster& caster, const Builder& build)
+{
+  Entry& entry = this->Entries[caster.Data];
+  // A weak pointer gone null: the address was freed and reused by new data.
+  if (entry.Data != caster.Data || entry.Time != caster.Data->GetMTime())
+  {
+    entry.Data = caster.Data;
+    entry.Time = caster.Data->GetMTime();
+    entry.Value = T();
+    build(caster.Data, entry.Value);
+    ++this->Builds;
+  }
+  return entry.Value;
+}
+
+template <typename T>
+void vtkShadowCasterCache<T>::Prune()
+{
+  for (auto it = this->Entries.begin(); it != this->Entries.end();)
+  {
+    it = it->second.Data ? std::next(it) : this->Entries.erase(it);
+  }
+}
+
+#endif

@@ -1,0 +1,45 @@
+#include "vtkShadowDistanceStage.h"
+
+#include "vtkShaderProgram.h"
+#include "vtkShadowDrawer.h"
+#include "vtkShadowMapperCode.h"
+#include "vtkTextureObject.h"
+
+#include "vtkShadowCubeDistanceFS.h"
+#include "vtkShadowCubeLookupFS.h"
+
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/mat4x4.hpp>
+
+#include <algorithm>
+
+//------------------------------------------------------------------------------
+void vtkShadowDistanceStage::Begin(const vtkShadowDrawSetup& setup)
+{
+  // Layered draws run the vertex shader for face 0; all faces share the eye.
+  const auto& face = (*setup.Faces)[std::max(setup.CubeFace, 0)];
+  const glm::mat4 clipToView(glm::inverse(face.Projection));
+  std::copy(glm::value_ptr(clipToView), glm::value_ptr(clipToView) + 16, this->FaceClipToView);
+  this->FaceSize = static_cast<float>(setup.Colours[0]->GetWidth());
+  this->FaceRange = this->Packed ? static_cast<float>(face.Far * face.Far) : 0.0f;
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowDistanceStage::PreReplace(vtkShadowShaderSources& sources)
+{
+  using namespace vtkShadowMapperCode;
+  sources.Require(sources.Fragment, LightDec,
+    std::string(vtkShadowCubeLookupFS) + "\n" + vtkShadowCubeDistanceFS + "\n" + LightDec,
+    "cube-map distances");
+  sources.Require(sources.Fragment, LightImpl,
+    std::string("gl_FragData[0] = vtkShadowFaceDistance();\n  return;\n  ") + LightImpl,
+    "cube-map distances");
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowDistanceStage::SetUniforms(vtkShaderProgram* program, vtkProp*)
+{
+  program->SetUniformMatrix4x4("vtkShadowFaceClipToView", this->FaceClipToView);
+  program->SetUniformf("vtkShadowFaceSize", this->FaceSize);
+  program->SetUniformf("vtkShadowFaceRange", this->FaceRange);
+}

@@ -1,0 +1,198 @@
+#include "vtkShadowGeometry.h"
+
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLVertexArrayObject.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkShaderProgram.h"
+#include "vtk_glew.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+vtkShadowGeometry::vtkShadowGeometry() = default;
+vtkShadowGeometry::~vtkShadowGeometry() = default;
+
+//------------------------------------------------------------------------------
+void vtkShadowGeometry::SetInput(vtkPolyData* data)
+{
+  if (data != this->Input)
+  {
+    this->Input = data;
+    this->UploadTime = 0;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowGeometry::SetShaders(
+  const std::string& vertex, const std::string& fragment, const std::string& geometry)
+{
+  this->VertexShader = vertex;
+  this->FragmentShader = fragment;
+  this->GeometryShader = geometry;
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowGeometry::Upload(vtkOpenGLRenderWindow* context)
+{
+  if (this->Input && this->UploadTime >= this->Input->GetMTime() && this->VAO)
+  {
+    return true;
+  }
+  this->Attributes.clear();
+  this->Vertices = 0;
+  this->BoundProgram = nullptr;
+  if (!this->VAO)
+  {
+    this->VAO = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
+  }
+  this->VAO->ShaderProgramChanged();
+  if (!this->Input)
+  {
+    return true;
+  }
+  this->UploadTime = this->Input->GetMTime();
+
+  // The triangles' corners, in order: every attribute expanded alike.
+  std::vector<vtkIdType> corners;
+  vtkCellArray* polys = this->Input->GetPolys();
+  const vtkIdType numberOfPoints = this->Input->GetNumberOfPoints();
+  vtkIdType n = 0;
+  const vtkIdType* ids = nullptr;
+  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
+  {
+    if (n != 3)
+    {
+      continue; // triangles only
+    }
+    if (ids[0] < 0 || ids[1] < 0 || ids[2] < 0 || ids[0] >= numberOfPoints ||
+      ids[1] >= numberOfPoints || ids[2] >= numberOfPoints)
+    {
+      vtkGenericWarningMacro("vtkShadowGeometry: a triangle names a point that does not exist; "
+                             "it is skipped.");
+      continue;
+    }
+    corners.insert(corners.end(), ids, ids + 3);
+  }
+  this->Vertices = static_cast<int>(corners.size());
+
+  auto add = [&](const std::string& name, vtkDataArray* array, int first, int components)
+  {
+    std::vector<float> values;
+    values.reserve(corners.size() * components);
+    for (vtkIdType id : corners)
+    {
+      for (int c = 0; c < components; ++c)
+      {
+        values.push_back(static_cast<float>(array->GetComponent(id, first + c)));
+      }
+    }
+    Attribute attribute;
+    attribute.Name = name;
+    attribute.Components = components;
+    attribute.Buffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+    attribute.Buffer->SetType(vtkOpenGLBufferObject::ArrayBuffer);
+    if (!values.empty())
+    {
+      attribute.Buffer->Upload(values, vtkOpenGLBufferObject::ArrayBuffer);
+    }
+    this->Attributes.push_back(attribute);
+  };
+  if (this->Input->GetPoints())
+  {
+    add("vtkShadowVertexMC", this->Input->GetPoints()->GetData(), 0, 3);
+  }
+  vtkPointData* pd = this->Input->GetPointData();
+  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = pd->GetArray(a);
+    if (!array || !array->GetName())
+    {
+      continue;
+    }
+    const int components = array->GetNumberOfComponents();
+    if (components == 9)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        add(std::string(array->GetName()) + std::to_string(k), array, 3 * k, 3);
+      }
+    }
+    else if (components >= 1 && components <= 4)
+    {
+      add(array->GetName(), array, 0, components);
+    }
+  }
+  (void)context;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowGeometry::Draw(vtkOpenGLRenderWindow* context, const glm::dmat4& worldToClip)
+{
+  if (!this->Upload(context) || this->Vertices == 0)
+  {
+    return true; // nothing to draw
+  }
+  vtkShaderProgram* program = context->GetShaderCache()->ReadyShaderProgram(
+    this->VertexShader.c_str(), this->FragmentShader.c_str(), this->GeometryShader.c_str());
+  if (!program)
+  {
+    return false;
+  }
+  if (program != this->BoundProgram)
+  {
+    this->VAO->ShaderProgramChanged();
+    this->VAO->Bind();
+    for (const Attribute& a : this->Attributes)
+    {
+      // Attributes the shaders do not use are skipped.
+      if (program->IsAttributeUsed(a.Name.c_str()))
+      {
+        this->VAO->AddAttributeArray(program, a.Buffer, a.Name, 0, sizeof(float) * a.Components,
+          VTK_FLOAT, a.Components, false);
+      }
+    }
+    this->BoundProgram = program;
+  }
+  const glm::mat4 modelToClip(worldToClip * this->ModelToWorld);
+  const glm::mat4 modelToWorld(this->ModelToWorld);
+  if (program->IsUniformUsed("vtkShadowModelToClip"))
+  {
+    program->SetUniformMatrix4x4(
+      "vtkShadowModelToClip", const_cast<float*>(glm::value_ptr(modelToClip)));
+  }
+  if (program->IsUniformUsed("vtkShadowModelToWorld"))
+  {
+    program->SetUniformMatrix4x4(
+      "vtkShadowModelToWorld", const_cast<float*>(glm::value_ptr(modelToWorld)));
+  }
+  if (this->Uniforms)
+  {
+    this->Uniforms(program);
+  }
+  this->VAO->Bind();
+  glDrawArrays(GL_TRIANGLES, 0, this->Vertices);
+  this->VAO->Release();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowGeometry::ReleaseGraphicsResources(vtkWindow*)
+{
+  for (Attribute& a : this->Attributes)
+  {
+    a.Buffer->ReleaseGraphicsResources();
+  }
+  this->Attributes.clear();
+  if (this->VAO)
+  {
+    this->VAO->ReleaseGraphicsResources();
+  }
+  this->VAO = nullptr;
+  this->BoundProgram = nullptr;
+  this->UploadTime = 0;
+}

@@ -1,0 +1,88 @@
+/**
+ * @class   vtkShadowGeometry
+ * @brief   Technique-owned geometry: triangles with their own vertex
+ *          attributes and shaders, drawn by vtkShadowDrawer through a draw's
+ *          frustum (a topology aware mesh, smoothie quads).
+ *
+ * Part of the framework. SetInput() takes triangle polydata: its points
+ * become the attribute `vtkShadowVertexMC` (vec3), each point-data array of
+ * 1 to 4 components an attribute of the array's name, and each array of 9
+ * components (three vec3, as vtkTopologyAwareMeshFilter writes) the three
+ * vec3 attributes `<name>0`, `<name>1`, `<name>2`. Triangles are drawn as
+ * they come (3 vertices each, no index buffer: a TAM's vertices are per face
+ * anyway). The data is uploaded on the first Draw() after it changed.
+ *
+ * The shaders are the technique's, each beginning with //VTK::System::Dec;
+ * they declare what they use of `uniform mat4 vtkShadowModelToClip` (model
+ * to the draw's clip space) and `vtkShadowModelToWorld`, which Draw() sets.
+ */
+
+#ifndef vtkShadowGeometry_h
+#define vtkShadowGeometry_h
+
+#include "vtkSmartPointer.h"               // for vtkSmartPointer
+#include "vtkSoftShadowsRenderingModule.h" // for export macro
+#include "vtkType.h"                       // for vtkMTimeType
+
+#include <glm/mat4x4.hpp> // for glm::dmat4
+
+#include <functional> // for std::function
+#include <string>     // for std::string
+#include <vector>     // for std::vector
+
+class vtkOpenGLBufferObject;
+class vtkOpenGLRenderWindow;
+class vtkOpenGLVertexArrayObject;
+class vtkPolyData;
+class vtkShaderProgram;
+class vtkWindow;
+
+class VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowGeometry
+{
+public:
+  vtkShadowGeometry();
+  ~vtkShadowGeometry();
+
+  void SetInput(vtkPolyData* data);
+  void SetShaders(const std::string& vertex, const std::string& fragment,
+    const std::string& geometry = std::string());
+  void SetModelToWorld(const glm::dmat4& modelToWorld) { this->ModelToWorld = modelToWorld; }
+
+  /// The technique's own uniforms, set before every draw.
+  void SetUniforms(const std::function<void(vtkShaderProgram*)>& uniforms)
+  {
+    this->Uniforms = uniforms;
+  }
+
+  /// Number of vertices drawn (3 a triangle).
+  int GetNumberOfVertices() const { return this->Vertices; }
+
+  /// Draw with `worldToClip` (the draw's frustum). False if the shaders fail.
+  bool Draw(vtkOpenGLRenderWindow* context, const glm::dmat4& worldToClip);
+
+  void ReleaseGraphicsResources(vtkWindow* w);
+
+private:
+  vtkShadowGeometry(const vtkShadowGeometry&) = delete;
+  void operator=(const vtkShadowGeometry&) = delete;
+
+  bool Upload(vtkOpenGLRenderWindow* context);
+
+  struct Attribute
+  {
+    std::string Name;
+    int Components = 0;
+    vtkSmartPointer<vtkOpenGLBufferObject> Buffer;
+  };
+  vtkSmartPointer<vtkPolyData> Input;
+  vtkMTimeType UploadTime = 0;
+  std::vector<Attribute> Attributes;
+  int Vertices = 0;
+  std::string VertexShader, FragmentShader, GeometryShader;
+  glm::dmat4 ModelToWorld{ 1.0 };
+  std::function<void(vtkShaderProgram*)> Uniforms;
+  vtkSmartPointer<vtkOpenGLVertexArrayObject> VAO;
+  vtkShaderProgram* BoundProgram = nullptr; ///< the VAO's attributes are bound to it
+};
+
+#endif

@@ -1,0 +1,73 @@
+/**
+ * @class   vtkShadowShaderHooks
+ * @brief   The render pass VTK's mappers see while the framework draws: it
+ *          forwards their shader hooks to the active vtkShadowStage.
+ *
+ * Part of the framework (vtkShadowDrawer owns it). Registered on props
+ * around a draw (Attach(), Detach()), it hands each mapper's shader sources
+ * to the stage, adds the layered geometry shader when a draw fills all six
+ * faces of a cube map, and warns once per mapper class and edit when a
+ * stage's required edit found nothing to edit. Its Render() draws nothing.
+ */
+
+#ifndef vtkShadowShaderHooks_h
+#define vtkShadowShaderHooks_h
+
+#include "vtkOpenGLRenderPass.h"
+#include "vtkSoftShadowsRenderingModule.h" // for export macro
+
+#include <set>     // for std::set
+#include <string>  // for std::string
+#include <utility> // for std::pair
+
+class vtkShadowStage;
+
+class VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowShaderHooks : public vtkOpenGLRenderPass
+{
+public:
+  static vtkShadowShaderHooks* New();
+  vtkTypeMacro(vtkShadowShaderHooks, vtkOpenGLRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * The stage the mappers' hooks go to (null: none). `faceFromFirst`, six
+   * column-major matrices, makes the draw layered: every triangle goes to
+   * the six faces of a cube map, face f's clip position being
+   * faceFromFirst[f] times face 0's.
+   */
+  void SetStage(vtkShadowStage* stage, const float (*faceFromFirst)[16] = nullptr);
+  vtkShadowStage* GetStage() const { return this->Stage; }
+
+  ///@{
+  /** Register on (remove from) the props of `s`. */
+  void Attach(const vtkRenderState* s) { this->PreRender(s); }
+  void Detach(const vtkRenderState* s) { this->PostRender(s); }
+  ///@}
+
+  void Render(const vtkRenderState*) override {}
+
+  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject* vao = nullptr) override;
+  vtkMTimeType GetShaderStageMTime() override { return this->StageTime; }
+
+protected:
+  vtkShadowShaderHooks();
+  ~vtkShadowShaderHooks() override;
+
+private:
+  vtkShadowShaderHooks(const vtkShadowShaderHooks&) = delete;
+  void operator=(const vtkShadowShaderHooks&) = delete;
+
+  void Report(class vtkShadowShaderSources& sources);
+
+  vtkShadowStage* Stage = nullptr;
+  const float (*FaceFromFirst)[16] = nullptr;
+  vtkTimeStamp StageTime;
+  std::set<std::pair<std::string, std::string>> Reported; ///< (mapper class, edit) warned about
+};
+
+#endif
