@@ -7,8 +7,9 @@ set(softshadows_rendering_classes
   vtkReferenceShadowPass
   vtkSoftShadowPass)
 
-# Framework internals shared by the techniques; not part of the public API.
-set(softshadows_rendering_private_classes
+# The framework the techniques stand on: installed, so that a technique can
+# be written outside the module, but not wrapped for Python.
+set(softshadows_rendering_framework_classes
   vtkShadowCasterRegistry
   vtkShadowCompute
   vtkShadowDepthStage
@@ -20,9 +21,11 @@ set(softshadows_rendering_private_classes
   vtkShadowShaderHooks
   vtkShadowStage)
 
+set(softshadows_rendering_framework_headers
+  vtkShadowMapperCode.h)
+
 # Header-only internals.
 set(softshadows_rendering_private_headers
-  vtkShadowMapperCode.h
   vtkShadowSampling.h)
 
 # Shaders live in glsl/ and are embedded as C strings at build time.

@@ -27,6 +27,7 @@
 
 #include <functional> // for std::function
 #include <map>        // for std::map
+#include <set>        // for std::set
 #include <vector>     // for std::vector
 
 class vtkActor;
@@ -81,8 +82,8 @@ public:
   /// The value for `caster`'s data, built with `build` if needed.
   T& Get(const vtkShadowCaster& caster, const Builder& build);
 
-  /// Drop the entries of data that no longer exists.
-  void Prune();
+  /// Drop the entries of data that is not among `casters` (this frame's).
+  void Prune(const vtkShadowCasterRegistry& casters);
   void Clear() { this->Entries.clear(); }
   size_t GetNumberOfEntries() const { return this->Entries.size(); }
   /// How many times Get() has built a value, in all.
@@ -118,11 +119,16 @@ T& vtkShadowCasterCache<T>::Get(const vtkShadowCaster& caster, const Builder& bu
 }
 
 template <typename T>
-void vtkShadowCasterCache<T>::Prune()
+void vtkShadowCasterCache<T>::Prune(const vtkShadowCasterRegistry& casters)
 {
+  std::set<const vtkPolyData*> current;
+  for (const vtkShadowCaster& caster : casters.GetCasters())
+  {
+    current.insert(caster.Data);
+  }
   for (auto it = this->Entries.begin(); it != this->Entries.end();)
   {
-    it = it->second.Data ? std::next(it) : this->Entries.erase(it);
+    it = it->second.Data && current.count(it->first) ? std::next(it) : this->Entries.erase(it);
   }
 }
 

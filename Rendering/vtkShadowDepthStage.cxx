@@ -5,8 +5,8 @@
 //------------------------------------------------------------------------------
 void vtkShadowDepthStage::PreReplace(vtkShadowShaderSources& sources)
 {
-  // Clipping and depth code come before the lighting code.
-  sources.Require(sources.Fragment, vtkShadowMapperCode::LightImpl,
-    std::string("gl_FragData[0] = vec4(1.0);\n  return;\n  ") + vtkShadowMapperCode::LightImpl,
-    "depth-only drawing");
+  // Clipping and depth code come before the lighting code. A shader without
+  // the tag (a custom one) still draws its depth, only slower.
+  vtkShadowShaderSources::Before(
+    sources.Fragment, vtkShadowMapperCode::LightImpl, "gl_FragData[0] = vec4(1.0);\n  return;");
 }

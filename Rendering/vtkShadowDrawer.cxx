@@ -226,7 +226,14 @@ bool vtkShadowDrawer::Draw(const vtkRenderState* s, const vtkShadowDrawSetup& se
   state->vtkglViewport(0, 0, width, height);
   state->vtkglScissor(0, 0, width, height);
   state->vtkglDisable(GL_SCISSOR_TEST);
-  state->vtkglEnable(GL_DEPTH_TEST);
+  if (setup.DepthTest)
+  {
+    state->vtkglEnable(GL_DEPTH_TEST);
+  }
+  else
+  {
+    state->vtkglDisable(GL_DEPTH_TEST);
+  }
   state->vtkglDepthMask(GL_TRUE);
   state->vtkglColorMask(colour, colour, colour, colour);
   state->vtkglClearColor(

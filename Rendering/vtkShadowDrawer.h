@@ -87,6 +87,9 @@ struct VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowDrawSetup
   double SlopeBias = 0.0;
   double ConstantBias = 0.0;
   Blending Blend = Blending::None;
+  /// Depth test (LESS) and depth writes; off for blended buffers, where the
+  /// blending decides what stays.
+  bool DepthTest = true;
 
   Props Draw = Props::Casters;
   std::vector<vtkShadowGeometry*> Geometry; ///< technique-owned, drawn after the props

@@ -90,8 +90,9 @@ void vtkShadowShaderHooks::Report(vtkShadowShaderSources& sources)
   {
     if (this->Reported.insert({ mapper, what }).second)
     {
-      vtkWarningMacro("A " << mapper << "'s shader lacks the code the shadows edit for " << what
-                           << "; its actors are drawn without it.");
+      vtkWarningMacro(<< mapper << ": its shader lacks the code the shadows edit for " << what
+                      << ", so its actors are drawn without it (a custom shader replacement, or "
+                         "mapper code other than vtkShadowMapperCode.h expects).");
     }
   }
 }

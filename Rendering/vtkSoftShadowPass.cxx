@@ -198,6 +198,7 @@ void vtkSoftShadowPass::vtkReceiverStage::PostReplace(vtkShadowShaderSources& so
   const bool active = lit && !lights.empty();
 
   std::string onlyVisibility = "1.0";
+  std::string unscaled; // lights whose lighting lines were not found
   std::ostringstream dec, impl;
   if (active)
   {
@@ -235,7 +236,7 @@ void vtkSoftShadowPass::vtkReceiverStage::PostReplace(vtkShadowShaderSources& so
       if (!vtkShadowMapperCode::ScaleLight(
             fragmentShader, n, "vtkShadowFactor" + std::to_string(n)))
       {
-        sources.AddMiss("light " + std::to_string(n) + "'s shadow (no lighting line to scale)");
+        unscaled += (unscaled.empty() ? "" : ", ") + std::to_string(n);
       }
       if (lights[slot].SceneIndex == pass->ShadowOnlyLight)
       {
@@ -243,12 +244,17 @@ void vtkSoftShadowPass::vtkReceiverStage::PostReplace(vtkShadowShaderSources& so
       }
     }
   }
-  // A lit shader must have kept the tags; others only lose them.
-  const std::string what = "the shadow term";
+  // A lit shader must have kept the tags and the lighting lines; others
+  // only lose the tags. One word per shader: the first thing missing.
   if (active)
   {
-    sources.Require(fragmentShader, vtkShadowMapperCode::ShadowDec, dec.str(), what);
-    sources.Require(fragmentShader, vtkShadowMapperCode::ShadowImpl, impl.str(), what);
+    const std::string what = "the shadow term";
+    if (sources.Require(fragmentShader, vtkShadowMapperCode::ShadowDec, dec.str(), what) &&
+      sources.Require(fragmentShader, vtkShadowMapperCode::ShadowImpl, impl.str(), what) &&
+      !unscaled.empty())
+    {
+      sources.AddMiss("the shadow of light " + unscaled + " (no lighting line to scale)");
+    }
   }
   else
   {
@@ -269,7 +275,16 @@ void vtkSoftShadowPass::vtkReceiverStage::PostReplace(vtkShadowShaderSources& so
 void vtkSoftShadowPass::vtkReceiverStage::SetUniforms(vtkShaderProgram* program, vtkProp*)
 {
   vtkSoftShadowPass* pass = this->Pass;
-  if (!program->IsUniformUsed("vtkShadowViewToWorld"))
+  // Only programs with the shadow term; a visibility that does not depend
+  // on the position (or only in the shadow-only view) may have left
+  // vtkShadowViewToWorld unused.
+  bool receiver = program->IsUniformUsed("vtkShadowViewToWorld") ||
+    program->IsUniformUsed("vtkShadowAttenuation[0]");
+  for (const auto& texture : pass->FrameReceiverTextures)
+  {
+    receiver = receiver || program->IsUniformUsed(texture.Name.c_str());
+  }
+  if (!receiver)
   {
     return;
   }
