@@ -17,12 +17,14 @@ list(TRANSFORM softshadows_filters_private_classes PREPEND "Module/")
 list(TRANSFORM softshadows_filters_private_headers PREPEND "Module/")
 list(TRANSFORM softshadows_rendering_private_headers PREPEND "Rendering/")
 list(TRANSFORM softshadows_rendering_classes PREPEND "Rendering/")
-list(TRANSFORM softshadows_rendering_private_classes PREPEND "Rendering/"
-  OUTPUT_VARIABLE private_classes)
+list(TRANSFORM softshadows_rendering_framework_classes PREPEND "Rendering/")
+list(TRANSFORM softshadows_rendering_framework_headers PREPEND "Rendering/")
 vtk_module_add_module(VTK::RenderingSoftShadows
   CLASSES ${softshadows_filters_classes} ${softshadows_rendering_classes}
   SOURCES ${shader_sources}
-  PRIVATE_CLASSES ${private_classes} ${softshadows_filters_private_classes}
+  NOWRAP_CLASSES ${softshadows_rendering_framework_classes}
+  NOWRAP_HEADERS ${softshadows_rendering_framework_headers}
+  PRIVATE_CLASSES ${softshadows_filters_private_classes}
   PRIVATE_HEADERS ${shader_headers} "${shim}" ${softshadows_filters_private_headers}
     ${softshadows_rendering_private_headers})
 vtk_module_include(VTK::RenderingSoftShadows PRIVATE Module Rendering)
