@@ -1,5 +1,5 @@
 /**
- * A scene file (JSON, see the README) read and checked into plain structs.
+ * A scene file (JSON, docs/scene-format.md) read and checked into plain structs.
  *
  * LoadScene() checks everything that can be checked without OpenGL: types,
  * ranges, unknown fields, source and technique names and parameters, that

@@ -1,5 +1,5 @@
 // softshadows: render, compare and time the soft-shadow techniques on scenes
-// described in JSON files. See README.md beside this file.
+// described in JSON files: the README (commands) and docs/scene-format.md.
 
 #include "Benchmark.h"
 #include "CommandLine.h"

@@ -111,8 +111,8 @@ void vtkShadowScreenSetup(vec4 positionWC)
 // surfaces not within 2% of an opaque one, surfaces seen within a few degrees
 // of edge-on) keep `hard`. A tolerance that grows with the distance's slope
 // would keep the screen-space result on grazing surfaces, but there the
-// isotropic screen-space kernels do no better than the hard shadow (README,
-// Quality).
+// isotropic screen-space kernels do no better than the hard shadow
+// (docs/quality.md).
 float vtkShadowScreenVisibility(sampler2D screen, float hard)
 {
   // Gathered at the four texels' shared corner as upper left, upper right,
