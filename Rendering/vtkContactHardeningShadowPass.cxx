@@ -2,7 +2,6 @@
 
 #include "vtkCamera.h"
 #include "vtkObjectFactory.h"
-#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
@@ -64,24 +63,7 @@ class vtkContactHardeningShadowPass::vtkInternals
 public:
   std::unique_ptr<vtkOpenGLQuadHelper> Tiles, TileSpread, Prepare, MultiPass, PCF, Gaussian,
     Resolve;
-  // Pass 2's output, one per light of a camera pass.
-  std::vector<vtkSmartPointer<vtkTextureObject>> DistanceMaps;
-  // The filtering passes' buffers: the prepare pass's target (the multi-pass
-  // blur ping-pongs between it and a distance map), and the single
-  // Gaussian's intermediate.
-  std::array<vtkSmartPointer<vtkTextureObject>, 2> Maps;
-  // Tile classification of a distance map for the prepare pass: per tile,
-  // then spread over its neighbourhoods.
-  std::array<vtkSmartPointer<vtkTextureObject>, 2> TileMaps;
-  // Depth used as a pixel mask: which blur passes draw a pixel (see the
-  // prepare pass).
-  vtkSmartPointer<vtkTextureObject> Mask;
-  vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
-  unsigned int RawDepthSampler = 0;   // reads a depth map without comparison
-  unsigned int BilinearSampler = 0;   // reads a contact map filtered
   unsigned int Queries[2] = { 0, 0 }; // did the last blur pass draw any pixel?
-  glm::vec2 PixelFootprint{ 0.0f };   // world size of a buffer pixel: x + y * distance
-  int LightsPerCameraPass = 1;        // distance maps one camera pass writes
   size_t CameraPassFirst = 0;         // the first light the camera pass draws
   std::vector<int> CameraPassUnits;   // texture units of its lights' maps
   std::vector<float> PassMidpoints;   // see vtkContactPassesFor() in vtkContactDistanceFS.glsl
@@ -143,28 +125,6 @@ public:
       input->Deactivate();
     }
   }
-
-  /// Bind the framebuffer with `first` (and `second`) as colour targets and,
-  /// when `masked`, the blur mask as depth.
-  void Target(vtkOpenGLRenderWindow* context, int w, int h, vtkTextureObject* first,
-    vtkTextureObject* second = nullptr, bool masked = false)
-  {
-    this->Framebuffer->Bind();
-    if (masked)
-    {
-      this->Framebuffer->AddDepthAttachment(this->Mask);
-    }
-    this->Framebuffer->AddColorAttachment(0, first);
-    if (second)
-    {
-      this->Framebuffer->AddColorAttachment(1, second);
-    }
-    this->Framebuffer->ActivateDrawBuffers(second ? 2 : 1);
-    context->GetState()->vtkglViewport(0, 0, w, h);
-    context->GetState()->vtkglScissor(0, 0, w, h);
-  }
-
-  void Untarget() { this->Framebuffer->RemoveColorAttachments(2); }
 };
 
 vtkStandardNewMacro(vtkContactHardeningShadowPass);
@@ -202,29 +162,12 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
   {
     return false;
   }
-  if (!in.RawDepthSampler)
+  if (!this->Screen->SupportsSamplers())
   {
-    if (!(GLEW_VERSION_3_3 || GLEW_ARB_sampler_objects))
-    {
-      vtkErrorMacro("Contact-hardening shadows need OpenGL 3.3 or ARB_sampler_objects to read "
-                    "shadow-map depths; drawing without shadows.");
-      in.Unsupported = true;
-      return false;
-    }
-    glGenSamplers(1, &in.RawDepthSampler);
-    glSamplerParameteri(in.RawDepthSampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
-    glSamplerParameteri(in.RawDepthSampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glSamplerParameteri(in.RawDepthSampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glSamplerParameteri(in.RawDepthSampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glSamplerParameteri(in.RawDepthSampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glGenSamplers(1, &in.BilinearSampler);
-    glSamplerParameteri(in.BilinearSampler, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glSamplerParameteri(in.BilinearSampler, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glSamplerParameteri(in.BilinearSampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glSamplerParameteri(in.BilinearSampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    GLint drawBuffers = 1;
-    glGetIntegerv(GL_MAX_DRAW_BUFFERS, &drawBuffers);
-    in.LightsPerCameraPass = std::max(1, std::min(static_cast<int>(drawBuffers), 8));
+    vtkErrorMacro("Contact-hardening shadows need OpenGL 3.3 or ARB_sampler_objects to read "
+                  "shadow-map depths; drawing without shadows.");
+    in.Unsupported = true;
+    return false;
   }
 
   const std::string common = vtkContactCommonFS;
@@ -246,62 +189,10 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
     return false;
   }
 
-  const int w = this->Screen->GetWidth();
-  const int h = this->Screen->GetHeight();
-  auto& lights = this->Maps->GetLights();
-  const size_t lightsPerPass = std::min(lights.size(), static_cast<size_t>(in.LightsPerCameraPass));
-  in.DistanceMaps.resize(lightsPerPass);
-  auto allocate = [context](vtkSmartPointer<vtkTextureObject>& map, int width, int height)
-  {
-    if (!map)
-    {
-      map = vtkShadowScreenBuffers::NewFloatTexture(context, width, height, 4);
-    }
-    map->Resize(width, height);
-  };
-  for (auto& map : in.DistanceMaps)
-  {
-    allocate(map, w, h);
-  }
-  allocate(in.Maps[0], w, h);
   // Only the single Gaussian blurs through a second buffer (rows, then columns).
-  if (this->Variant == Gaussian)
+  if (this->Variant != Gaussian)
   {
-    allocate(in.Maps[1], w, h);
-  }
-  else if (in.Maps[1])
-  {
-    in.Maps[1]->ReleaseGraphicsResources(context);
-    in.Maps[1] = nullptr;
-  }
-  for (auto& map : in.TileMaps)
-  {
-    allocate(map, (w + TileSize - 1) / TileSize, (h + TileSize - 1) / TileSize);
-  }
-  if (!in.Mask)
-  {
-    in.Mask = vtkSmartPointer<vtkTextureObject>::New();
-    in.Mask->SetContext(context);
-    in.Mask->AllocateDepth(w, h, vtkTextureObject::Fixed24);
-  }
-  in.Mask->Resize(w, h);
-  if (!in.Framebuffer)
-  {
-    in.Framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-    in.Framebuffer->SetContext(context);
-  }
-
-  // The camera's pixel footprint, to turn world penumbra widths into pixels.
-  vtkCamera* camera = renderer->GetActiveCamera();
-  in.PixelFootprint = glm::vec2(0.0f);
-  if (camera->GetParallelProjection())
-  {
-    in.PixelFootprint.x = static_cast<float>(2.0 * camera->GetParallelScale() / h);
-  }
-  else
-  {
-    in.PixelFootprint.y =
-      static_cast<float>(2.0 * std::tan(glm::radians(camera->GetViewAngle()) / 2.0) / h);
+    this->Screen->ReleaseTexture("contact.filter1");
   }
 
   // Blur variances add: where the variance of k + 1 passes becomes closer to
@@ -318,15 +209,18 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
     variance = next;
   }
 
-  // Pass 2 for up to LightsPerCameraPass lights at a time, drawn with the
-  // camera depth; then each light's filtering.
+  // Pass 2 for as many lights at a time as a pass has colour targets, drawn
+  // with the camera depth; then each light's filtering.
+  const auto& lights = this->Maps->GetLights();
+  const size_t lightsPerPass =
+    std::min(lights.size(), static_cast<size_t>(this->Screen->GetMaximumTargets()));
   for (size_t first = 0; first < lights.size(); first += lightsPerPass)
   {
     const size_t count = std::min(lightsPerPass, lights.size() - first);
     std::vector<vtkTextureObject*> targets;
     for (size_t k = 0; k < count; ++k)
     {
-      targets.push_back(in.DistanceMaps[k]);
+      targets.push_back(this->Screen->GetTexture("contact.distance" + std::to_string(k), 4));
     }
     if (!this->RenderDistanceMaps(s, first, targets))
     {
@@ -359,18 +253,19 @@ bool vtkContactHardeningShadowPass::RenderDistanceMaps(
     in.CameraPassUnits.push_back(map->GetTextureUnit());
     if (!light.Point)
     {
-      glBindSampler(map->GetTextureUnit(), in.RawDepthSampler);
+      this->Screen->BindRawDepth(map);
     }
   }
   const bool ok = this->RenderCameraDepth(s, targets);
   for (size_t k = 0; k < count; ++k)
   {
     const auto& light = lights[first + k];
+    vtkTextureObject* map = light.Point ? light.CubeMap : light.DepthMap;
     if (!light.Point)
     {
-      glBindSampler(in.CameraPassUnits[k], 0);
+      this->Screen->UnbindSampler(map->GetTextureUnit());
     }
-    (light.Point ? light.CubeMap : light.DepthMap)->Deactivate();
+    map->Deactivate();
   }
   in.CameraPassUnits.clear();
   return ok;
@@ -465,9 +360,7 @@ void vtkContactHardeningShadowPass::SetCameraPassUniforms(vtkShaderProgram* prog
       const glm::vec2 range(light.Map.Near, light.Map.Far);
       program->SetUniform2f(("contactDepthRange" + index).c_str(), glm::value_ptr(range));
     }
-    const double size =
-      light.Directional ? 2.0 * std::tan(glm::radians(light.Radius)) : 2.0 * light.Radius;
-    program->SetUniformf(("contactLightSize" + index).c_str(), static_cast<float>(size));
+    program->SetUniformf(("contactLightSize" + index).c_str(), static_cast<float>(light.GetSize()));
   }
   program->SetUniformf("contactCubeTexel", 2.0f / static_cast<float>(this->MapSize));
   program->SetUniformf("contactDistanceBias", static_cast<float>(this->DistanceBias));
@@ -479,7 +372,7 @@ void vtkContactHardeningShadowPass::SetCameraPassUniforms(vtkShaderProgram* prog
     program->SetUniformf("resolutionDivisor", static_cast<float>(this->ResolutionDivisor));
     return;
   }
-  program->SetUniform2f("pixelFootprint", glm::value_ptr(in.PixelFootprint));
+  program->SetUniform2f("pixelFootprint", this->Screen->GetPixelFootprint());
 }
 
 //------------------------------------------------------------------------------
@@ -487,10 +380,17 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
   vtkOpenGLRenderWindow* context, int slot, vtkTextureObject* distance)
 {
   vtkInternals& in = *this->Internals;
-  const int w = this->Screen->GetWidth();
-  const int h = this->Screen->GetHeight();
-  const int tilesW = static_cast<int>(in.TileMaps[0]->GetWidth());
-  const int tilesH = static_cast<int>(in.TileMaps[0]->GetHeight());
+  vtkShadowScreenBuffers* screen = this->Screen.get();
+  const int tilesW = (screen->GetWidth() + TileSize - 1) / TileSize;
+  const int tilesH = (screen->GetHeight() + TileSize - 1) / TileSize;
+  const std::array<vtkTextureObject*, 2> tiles = { screen->GetTexture(
+                                                     "contact.tiles0", 4, tilesW, tilesH),
+    screen->GetTexture("contact.tiles1", 4, tilesW, tilesH) };
+  // The filtering passes' buffers: the prepare pass's target (the multi-pass
+  // blur ping-pongs between it and the distance map), the single Gaussian's
+  // intermediate, and a depth mask: which blur passes draw a pixel.
+  vtkTextureObject* filtered = screen->GetTexture("contact.filter0", 4);
+  vtkTextureObject* mask = screen->GetTexture("contact.mask", 0);
   const std::vector<float>& taps = in.FrameTaps;
   const float tolerance = 0.1f;
 
@@ -500,22 +400,22 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
   state->PushFramebufferBindings();
   // Which tiles the early-out's and the dilation's neighbourhoods find all
   // shadowed, or partly shadowed.
-  in.Target(context, tilesW, tilesH, in.TileMaps[0]);
+  screen->BindTargets({ tiles[0] }, nullptr, tilesW, tilesH);
   int bilinearUnit = -1;
   in.Draw(
-    this->Screen.get(), in.Tiles, distance,
+    screen, in.Tiles, distance,
     [&](vtkShaderProgram* program)
     {
       bilinearUnit = distance->GetTextureUnit();
-      glBindSampler(bilinearUnit, in.BilinearSampler);
+      screen->BindBilinear(distance);
       program->SetUniformi("contactTileSize", TileSize);
     },
     tolerance, this->DebugView);
-  glBindSampler(bilinearUnit, 0);
-  in.Untarget();
-  in.Target(context, tilesW, tilesH, in.TileMaps[1]);
+  screen->UnbindSampler(bilinearUnit);
+  screen->UnbindTargets();
+  screen->BindTargets({ tiles[1] }, nullptr, tilesW, tilesH);
   in.Draw(
-    this->Screen.get(), in.TileSpread, in.TileMaps[0],
+    screen, in.TileSpread, tiles[0],
     [&](vtkShaderProgram* program)
     {
       const int earlyOutReach = this->EarlyOutKernelSize / 2;
@@ -524,7 +424,7 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
       program->SetUniformi("dilationTiles", (dilationReach + TileSize - 1) / TileSize);
     },
     tolerance, this->DebugView);
-  in.Untarget();
+  screen->UnbindTargets();
 
   // The ping-pong pair: the prepare pass's target and the distance map,
   // which holds the final value of every pixel no blur touches. The
@@ -533,26 +433,32 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
   // draws, so that a pixel's last pass leaves its final code there without
   // a pass of its own. The other variants' last pass writes them all, as
   // does the debug view's, so there the chain writes none.
-  vtkTextureObject* packed = this->Screen->GetPacked(slot);
-  vtkTextureObject* chainCodes = this->Variant == MultiPass && !this->DebugView ? packed : nullptr;
-  const std::array<vtkTextureObject*, 2> pair = { in.Maps[0], distance };
+  vtkTextureObject* packed = screen->GetPacked(slot);
+  const bool chainCodes = this->Variant == MultiPass && !this->DebugView;
+  const std::array<vtkTextureObject*, 2> pair = { filtered, distance };
+  // A chain target, and the receivers' codes alongside when the chain writes them.
+  auto chainTargets = [&](vtkTextureObject* target)
+  {
+    return chainCodes ? std::vector<vtkTextureObject*>{ target, packed }
+                      : std::vector<vtkTextureObject*>{ target };
+  };
 
   auto toPacked = [&](std::unique_ptr<vtkOpenGLQuadHelper>& quad, vtkTextureObject* input,
                     const std::function<void(vtkShaderProgram*)>& uniforms)
   {
-    in.Target(context, w, h, packed);
-    in.Draw(this->Screen.get(), quad, input, uniforms, tolerance, this->DebugView);
-    in.Untarget();
+    screen->BindTargets({ packed });
+    in.Draw(screen, quad, input, uniforms, tolerance, this->DebugView);
+    screen->UnbindTargets();
   };
 
   // Umbra early-out and pass 3.
-  in.Target(context, w, h, pair[0], chainCodes, true);
-  in.TileMaps[1]->Activate();
+  screen->BindTargets(chainTargets(pair[0]), mask);
+  tiles[1]->Activate();
   in.Draw(
-    this->Screen.get(), in.Prepare, distance,
+    screen, in.Prepare, distance,
     [&](vtkShaderProgram* program)
     {
-      program->SetUniformi("contactTiles", in.TileMaps[1]->GetTextureUnit());
+      program->SetUniformi("contactTiles", tiles[1]->GetTextureUnit());
       program->SetUniformi("contactTileSize", TileSize);
       program->SetUniformi("earlyOut", this->UmbraEarlyOut ? 1 : 0);
       program->SetUniformi("dilation", this->Dilation ? 1 : 0);
@@ -561,8 +467,8 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
       program->SetUniformi("tapCount", this->PoissonTaps);
     },
     tolerance, this->DebugView, vtkShadowScreenBuffers::QuadMask::Write);
-  in.TileMaps[1]->Deactivate();
-  in.Untarget();
+  tiles[1]->Deactivate();
+  screen->UnbindTargets();
 
   // Pass 4, then pass 5's visibility.
   if (this->Variant == MultiPass)
@@ -586,9 +492,9 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
         glBeginConditionalRender(in.Queries[(pass - 1) % 2], GL_QUERY_WAIT);
       }
       glBeginQuery(GL_SAMPLES_PASSED, in.Queries[pass % 2]);
-      in.Target(context, w, h, pair[(pass + 1) % 2], chainCodes, true);
+      screen->BindTargets(chainTargets(pair[(pass + 1) % 2]), mask);
       in.Draw(
-        this->Screen.get(), in.MultiPass, pair[pass % 2],
+        screen, in.MultiPass, pair[pass % 2],
         [&](vtkShaderProgram* program)
         {
           const std::vector<float> passTaps = ScaledTaps(taps, size);
@@ -597,7 +503,7 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
         },
         tolerance, this->DebugView, vtkShadowScreenBuffers::QuadMask::Test,
         1.0f - static_cast<float>(pass) / 256.0f);
-      in.Untarget();
+      screen->UnbindTargets();
       glEndQuery(GL_SAMPLES_PASSED);
       if (pass > 0)
       {
@@ -611,9 +517,10 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
   }
   else if (this->Variant == Gaussian)
   {
-    in.Target(context, w, h, in.Maps[1]);
+    vtkTextureObject* rows = screen->GetTexture("contact.filter1", 4);
+    screen->BindTargets({ rows });
     in.Draw(
-      this->Screen.get(), in.Gaussian, in.Maps[0],
+      screen, in.Gaussian, filtered,
       [&](vtkShaderProgram* program)
       {
         program->SetUniformi("maximumKernel", this->MaximumKernelSize);
@@ -621,8 +528,8 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
         program->SetUniformi("lastPass", 0);
       },
       tolerance, this->DebugView);
-    in.Untarget();
-    toPacked(in.Gaussian, in.Maps[1],
+    screen->UnbindTargets();
+    toPacked(in.Gaussian, rows,
       [&](vtkShaderProgram* program)
       {
         program->SetUniformi("maximumKernel", this->MaximumKernelSize);
@@ -632,7 +539,7 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
   }
   else
   {
-    toPacked(in.PCF, in.Maps[0],
+    toPacked(in.PCF, filtered,
       [&](vtkShaderProgram* program)
       { program->SetUniformi("maximumKernel", this->MaximumKernelSize); });
   }
@@ -648,30 +555,6 @@ void vtkContactHardeningShadowPass::ReleaseGraphicsResources(vtkWindow* w)
     { &in.Tiles, &in.TileSpread, &in.Prepare, &in.MultiPass, &in.PCF, &in.Gaussian, &in.Resolve })
   {
     quad->reset();
-  }
-  for (auto& texture : in.DistanceMaps)
-  {
-    texture->ReleaseGraphicsResources(w);
-  }
-  in.DistanceMaps.clear();
-  for (auto* texture : { &in.Maps[0], &in.Maps[1], &in.TileMaps[0], &in.TileMaps[1], &in.Mask })
-  {
-    if (*texture)
-    {
-      (*texture)->ReleaseGraphicsResources(w);
-    }
-    *texture = nullptr;
-  }
-  if (in.Framebuffer)
-  {
-    in.Framebuffer->ReleaseGraphicsResources(w);
-    in.Framebuffer = nullptr;
-  }
-  if (in.RawDepthSampler)
-  {
-    glDeleteSamplers(1, &in.RawDepthSampler);
-    glDeleteSamplers(1, &in.BilinearSampler);
-    in.RawDepthSampler = in.BilinearSampler = 0;
   }
   if (in.Queries[0])
   {

@@ -55,6 +55,13 @@ vtkShadowMapManager::vtkShadowMapManager()
 vtkShadowMapManager::~vtkShadowMapManager() = default;
 
 //------------------------------------------------------------------------------
+double vtkShadowMapManager::Light::GetSize() const
+{
+  return this->Directional ? 2.0 * std::tan(vtkMath::RadiansFromDegrees(this->Radius))
+                           : 2.0 * this->Radius;
+}
+
+//------------------------------------------------------------------------------
 int vtkShadowMapManager::Update(vtkRenderer* renderer)
 {
   this->Renderer = renderer;

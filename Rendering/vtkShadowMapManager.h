@@ -68,6 +68,9 @@ public:
     vtkSmartPointer<vtkTextureObject> DepthMap; ///< spot and directional lights
     std::array<Frustum, 6> Faces;               ///< point lights: +x -x +y -y +z -z
     vtkSmartPointer<vtkTextureObject> CubeMap;  ///< point lights: squared distances
+    /// The light's width: its diameter (spot, point), or for directional
+    /// lights 2 tan(angular radius), the width per unit of distance.
+    double GetSize() const;
     /// The technique's own textures for this light (e.g. a distance map),
     /// kept for the light's slot across frames and released with the maps.
     std::vector<vtkSmartPointer<vtkTextureObject>> Textures;

@@ -1,6 +1,7 @@
 #include "vtkShadowScreenBuffers.h"
 
 #include "vtkCamera.h"
+#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
@@ -18,7 +19,7 @@
 #include "vtkShadowScreenCommonFS.h"
 
 #include <algorithm> // for std::any_of, std::fill, std::max, std::none_of
-#include <cmath>     // for std::log2
+#include <cmath>     // for std::log2, std::tan
 #include <string>
 
 vtkShadowScreenBuffers::vtkShadowScreenBuffers() = default;
@@ -74,6 +75,18 @@ bool vtkShadowScreenBuffers::Update(const vtkRenderState* s)
   const double logFar = std::log2(std::max(range[1], range[0] * 1.001) * 2.0);
   this->LogNear = static_cast<float>(logNear);
   this->CodesPerLog = static_cast<float>(2046.0 / (logFar - logNear));
+  // A buffer pixel's world size, to turn world lengths into pixels.
+  if (camera->GetParallelProjection())
+  {
+    this->PixelFootprint[0] = static_cast<float>(2.0 * camera->GetParallelScale() / this->Height);
+    this->PixelFootprint[1] = 0.0f;
+  }
+  else
+  {
+    this->PixelFootprint[0] = 0.0f;
+    this->PixelFootprint[1] = static_cast<float>(
+      2.0 * std::tan(vtkMath::RadiansFromDegrees(camera->GetViewAngle()) / 2.0) / this->Height);
+  }
   vtkNew<vtkMatrix4x4> clipToWorld;
   vtkMatrix4x4::Multiply4x4(
     camera->GetProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1, 1),
@@ -198,28 +211,144 @@ void vtkShadowScreenBuffers::MarkWritten(int slot, Written writer)
 }
 
 //------------------------------------------------------------------------------
-void vtkShadowScreenBuffers::BindFramebuffer()
+vtkTextureObject* vtkShadowScreenBuffers::GetTexture(
+  const std::string& name, int components, int width, int height)
+{
+  width = width > 0 ? width : this->Width;
+  height = height > 0 ? height : this->Height;
+  vtkSmartPointer<vtkTextureObject>& texture = this->Textures[name];
+  if (!texture)
+  {
+    if (components > 0)
+    {
+      texture = NewFloatTexture(this->Context, width, height, components);
+    }
+    else
+    {
+      texture = vtkSmartPointer<vtkTextureObject>::New();
+      texture->SetContext(this->Context);
+      texture->AllocateDepth(width, height, vtkTextureObject::Fixed24);
+    }
+  }
+  texture->Resize(width, height);
+  return texture;
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenBuffers::ReleaseTexture(const std::string& name)
+{
+  auto it = this->Textures.find(name);
+  if (it != this->Textures.end())
+  {
+    it->second->ReleaseGraphicsResources(this->Context);
+    this->Textures.erase(it);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenBuffers::BindTargets(
+  const std::vector<vtkTextureObject*>& colours, vtkTextureObject* depth, int width, int height)
 {
   if (!this->Framebuffer)
   {
     this->Framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
     this->Framebuffer->SetContext(this->Context);
   }
-  vtkOpenGLState* state = this->Context->GetState();
-  state->PushFramebufferBindings();
   this->Framebuffer->Bind();
-  state->vtkglViewport(0, 0, this->Width, this->Height);
-  state->vtkglScissor(0, 0, this->Width, this->Height);
+  if (depth)
+  {
+    this->Framebuffer->AddDepthAttachment(depth);
+  }
+  const auto count = static_cast<unsigned int>(colours.size());
+  for (unsigned int i = 0; i < count; ++i)
+  {
+    this->Framebuffer->AddColorAttachment(i, colours[i]);
+  }
+  this->Framebuffer->ActivateDrawBuffers(count);
+  this->BoundTargets = count;
+  this->BoundDepth = depth != nullptr;
+  width = width > 0 ? width : this->Width;
+  height = height > 0 ? height : this->Height;
+  vtkOpenGLState* state = this->Context->GetState();
+  state->vtkglViewport(0, 0, width, height);
+  state->vtkglScissor(0, 0, width, height);
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenBuffers::UnbindTargets()
+{
+  this->Framebuffer->RemoveColorAttachments(this->BoundTargets);
+  if (this->BoundDepth)
+  {
+    this->Framebuffer->RemoveDepthAttachment();
+  }
+  this->BoundTargets = 0;
+  this->BoundDepth = false;
+}
+
+//------------------------------------------------------------------------------
+int vtkShadowScreenBuffers::GetMaximumTargets()
+{
+  if (this->MaximumTargets == 0)
+  {
+    GLint drawBuffers = 1;
+    glGetIntegerv(GL_MAX_DRAW_BUFFERS, &drawBuffers);
+    this->MaximumTargets = std::max(1, std::min(static_cast<int>(drawBuffers), 8));
+  }
+  return this->MaximumTargets;
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowScreenBuffers::SupportsSamplers() const
+{
+  return GLEW_VERSION_3_3 || GLEW_ARB_sampler_objects;
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenBuffers::CreateSamplers()
+{
+  if (this->RawDepthSampler)
+  {
+    return;
+  }
+  glGenSamplers(1, &this->RawDepthSampler);
+  glSamplerParameteri(this->RawDepthSampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+  glSamplerParameteri(this->RawDepthSampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glSamplerParameteri(this->RawDepthSampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glSamplerParameteri(this->RawDepthSampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(this->RawDepthSampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glGenSamplers(1, &this->BilinearSampler);
+  glSamplerParameteri(this->BilinearSampler, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glSamplerParameteri(this->BilinearSampler, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glSamplerParameteri(this->BilinearSampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(this->BilinearSampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenBuffers::BindRawDepth(vtkTextureObject* texture)
+{
+  this->CreateSamplers();
+  glBindSampler(texture->GetTextureUnit(), this->RawDepthSampler);
+}
+
+void vtkShadowScreenBuffers::BindBilinear(vtkTextureObject* texture)
+{
+  this->CreateSamplers();
+  glBindSampler(texture->GetTextureUnit(), this->BilinearSampler);
+}
+
+void vtkShadowScreenBuffers::UnbindSampler(int unit)
+{
+  glBindSampler(unit, 0);
 }
 
 //------------------------------------------------------------------------------
 void vtkShadowScreenBuffers::BeginVisibility(int slot, float clear)
 {
   vtkTextureObject* visibility = this->GetVisibility(slot);
-  this->BindFramebuffer();
   vtkOpenGLState* state = this->Context->GetState();
-  this->Framebuffer->AddColorAttachment(0, visibility);
-  this->Framebuffer->ActivateDrawBuffers(1);
+  state->PushFramebufferBindings();
+  this->BindTargets({ visibility });
   state->vtkglClearColor(clear, 0.0f, 0.0f, 0.0f);
   state->vtkglClear(GL_COLOR_BUFFER_BIT);
 }
@@ -227,7 +356,7 @@ void vtkShadowScreenBuffers::BeginVisibility(int slot, float clear)
 //------------------------------------------------------------------------------
 void vtkShadowScreenBuffers::EndVisibility()
 {
-  this->Framebuffer->RemoveColorAttachment(0);
+  this->UnbindTargets();
   this->Context->GetState()->PopFramebufferBindings();
 }
 
@@ -267,23 +396,22 @@ bool vtkShadowScreenBuffers::Pack(int numberOfLights)
   vtkOpenGLState* state = this->Context->GetState();
   vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
   state->vtkglDisable(GL_BLEND);
-  this->BindFramebuffer();
+  state->PushFramebufferBindings();
   for (int slot = 0; slot < numberOfLights; ++slot)
   {
     if (this->Writer[slot] != Written::Visibility)
     {
       continue;
     }
-    this->Framebuffer->AddColorAttachment(0, this->GetPacked(slot));
-    this->Framebuffer->ActivateDrawBuffers(1);
+    this->BindTargets({ this->GetPacked(slot) });
     vtkTextureObject* visibility = this->Visibility[slot];
     visibility->Activate();
     this->DrawQuad(this->PackQuad.get(),
       [&](vtkShaderProgram* program)
       { program->SetUniformi("vtkShadowVisibility", visibility->GetTextureUnit()); });
     visibility->Deactivate();
+    this->UnbindTargets();
   }
-  this->Framebuffer->RemoveColorAttachment(0);
   state->PopFramebufferBindings();
   return true;
 }
@@ -340,6 +468,18 @@ void vtkShadowScreenBuffers::ReleaseGraphicsResources(vtkWindow* w)
     texture->ReleaseGraphicsResources(w);
   }
   this->Packed.clear();
+  for (auto& texture : this->Textures)
+  {
+    texture.second->ReleaseGraphicsResources(w);
+  }
+  this->Textures.clear();
+  if (this->RawDepthSampler)
+  {
+    glDeleteSamplers(1, &this->RawDepthSampler);
+    glDeleteSamplers(1, &this->BilinearSampler);
+    this->RawDepthSampler = this->BilinearSampler = 0;
+  }
+  this->MaximumTargets = 0;
   this->Writer.clear();
   this->PackQuad.reset();
   if (this->Framebuffer)

@@ -18,6 +18,7 @@
 #include "vtkSoftShadowsRenderingModule.h" // for export macro
 
 #include <functional> // for std::function
+#include <map>        // for std::map
 #include <memory>     // for std::unique_ptr
 #include <string>     // for std::string
 #include <vector>     // for std::vector
@@ -105,6 +106,51 @@ public:
     vtkOpenGLRenderWindow* context, int width, int height, int components);
 
   /**
+   * A technique's own texture, kept with the buffers: a NewFloatTexture() of
+   * `components`, or (0 components) a 24-bit depth texture, e.g. a mask that
+   * later quads test against. `width` x `height`, 0 for the buffers' size;
+   * created on first use, resized after, released with the buffers or by
+   * ReleaseTexture(). `name` tells a technique's textures apart.
+   */
+  vtkTextureObject* GetTexture(
+    const std::string& name, int components, int width = 0, int height = 0);
+  void ReleaseTexture(const std::string& name);
+
+  ///@{
+  /**
+   * Bind `colours` (and `depth`) as the targets of the next screen-space
+   * passes, over `width` x `height` (0: the buffers' size); UnbindTargets()
+   * detaches them. The caller pushes the framebuffer bindings (vtkOpenGLState)
+   * before its passes and pops them after.
+   */
+  void BindTargets(const std::vector<vtkTextureObject*>& colours, vtkTextureObject* depth = nullptr,
+    int width = 0, int height = 0);
+  void UnbindTargets();
+  ///@}
+
+  /// Colour targets one pass can write (GL_MAX_DRAW_BUFFERS, at most 8).
+  int GetMaximumTargets();
+
+  ///@{
+  /**
+   * Sampler objects (OpenGL 3.3) for an activated texture: a depth map read
+   * as raw depths (no comparison, nearest), or a screen texture read with
+   * bilinear filtering; UnbindSampler() restores the texture's own. False
+   * when the context has no sampler objects.
+   */
+  bool SupportsSamplers() const;
+  void BindRawDepth(vtkTextureObject* texture);
+  void BindBilinear(vtkTextureObject* texture);
+  void UnbindSampler(int unit);
+  ///@}
+
+  /**
+   * World size of one of the buffers' pixels on a surface at camera distance
+   * d: footprint[0] + footprint[1] * d (parallel projection: [0] only).
+   */
+  const float* GetPixelFootprint() const { return this->PixelFootprint; }
+
+  /**
    * Light `slot`'s visibility texture (as above), allocated on demand, for a
    * technique that draws into it with its own framebuffer: every texel must
    * be written, nothing clears it.
@@ -140,9 +186,7 @@ public:
   void ReleaseGraphicsResources(vtkWindow* w);
 
 private:
-  /// Push the framebuffer bindings and bind this->Framebuffer (created on
-  /// demand) over the buffers' size.
-  void BindFramebuffer();
+  void CreateSamplers();
 
   /// What a light's receivers' texture comes from this frame.
   enum class Written
@@ -170,6 +214,13 @@ private:
   float CodesPerLog = 1.0f; // and codes per unit of log2
   bool GatherReported = false;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
+  unsigned int BoundTargets = 0;
+  bool BoundDepth = false;
+  std::map<std::string, vtkSmartPointer<vtkTextureObject>> Textures;
+  int MaximumTargets = 0;
+  unsigned int RawDepthSampler = 0;
+  unsigned int BilinearSampler = 0;
+  float PixelFootprint[2] = { 0.0f, 0.0f };
 };
 
 #endif
