@@ -22,7 +22,8 @@ set(softshadows_rendering_framework_classes
   vtkShadowStage)
 
 set(softshadows_rendering_framework_headers
-  vtkShadowMapperCode.h)
+  vtkShadowMapperCode.h
+  vtkShadowMatrices.h)
 
 # Header-only internals.
 set(softshadows_rendering_private_headers
@@ -47,6 +48,7 @@ set(softshadows_rendering_shaders
   vtkShadowNormalOffsetFS
   vtkShadowPackFS
   vtkShadowScreenCommonFS
+  vtkShadowSurfaceFS
   vtkSoftShadowReceiverFS)
 
 # Sets <sources_var> and <headers_var> to the generated C strings of the

@@ -291,7 +291,7 @@ std::string vtkContactHardeningShadowPass::GetCameraPassDeclarations()
   if (this->UseLightSize && this->Variant == MultiPass)
   {
     // Exact: 9 significant digits round-trip a float.
-    dec << "const float passMidpoints[" << in.PassMidpoints.size() << "] = float[](";
+    dec << "const float contactPassMidpoints[" << in.PassMidpoints.size() << "] = float[](";
     dec << std::scientific << std::setprecision(9);
     for (size_t k = 0; k < in.PassMidpoints.size(); ++k)
     {
@@ -346,11 +346,8 @@ void vtkContactHardeningShadowPass::SetCameraPassUniforms(vtkShaderProgram* prog
     {
       program->SetUniformi(
         ("contactLightCube[" + std::to_string(cubes++) + "]").c_str(), in.CameraPassUnits[k]);
-      const glm::vec3 center(light.Position);
-      program->SetUniform3f(("contactCubeCenter" + index).c_str(), glm::value_ptr(center));
-      const double far = light.Faces[0].Far;
-      program->SetUniformf(("contactCubeRange" + index).c_str(),
-        this->PackedCubeMaps ? static_cast<float>(far * far) : 0.0f);
+      vtkShadowMapManager::SetCubeUniforms(
+        program, "contact", index, light.Faces, this->PackedCubeMaps);
     }
     else
     {
@@ -362,17 +359,16 @@ void vtkContactHardeningShadowPass::SetCameraPassUniforms(vtkShaderProgram* prog
     }
     program->SetUniformf(("contactLightSize" + index).c_str(), static_cast<float>(light.GetSize()));
   }
-  program->SetUniformf("contactCubeTexel", 2.0f / static_cast<float>(this->MapSize));
-  program->SetUniformf("contactDistanceBias", static_cast<float>(this->DistanceBias));
-  program->SetUniformf("contactNormalBias", static_cast<float>(this->NormalBias));
+  vtkShadowMapManager::SetLookupUniforms(
+    program, "contact", this->MapSize, this->NormalBias, this->DistanceBias);
   if (!this->UseLightSize)
   {
-    program->SetUniformf("distancePower", static_cast<float>(this->DistancePower));
-    program->SetUniformf("distanceMultiplier", static_cast<float>(this->DistanceMultiplier));
-    program->SetUniformf("resolutionDivisor", static_cast<float>(this->ResolutionDivisor));
+    program->SetUniformf("contactDistancePower", static_cast<float>(this->DistancePower));
+    program->SetUniformf("contactDistanceMultiplier", static_cast<float>(this->DistanceMultiplier));
+    program->SetUniformf("contactResolutionDivisor", static_cast<float>(this->ResolutionDivisor));
     return;
   }
-  program->SetUniform2f("pixelFootprint", this->Screen->GetPixelFootprint());
+  program->SetUniform2f("contactPixelFootprint", this->Screen->GetPixelFootprint());
 }
 
 //------------------------------------------------------------------------------
@@ -420,8 +416,8 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
     {
       const int earlyOutReach = this->EarlyOutKernelSize / 2;
       const int dilationReach = (this->DilationSize + 1) / 2;
-      program->SetUniformi("earlyOutTiles", (earlyOutReach + TileSize - 1) / TileSize);
-      program->SetUniformi("dilationTiles", (dilationReach + TileSize - 1) / TileSize);
+      program->SetUniformi("contactEarlyOutTiles", (earlyOutReach + TileSize - 1) / TileSize);
+      program->SetUniformi("contactDilationTiles", (dilationReach + TileSize - 1) / TileSize);
     },
     tolerance, this->DebugView);
   screen->UnbindTargets();
@@ -460,11 +456,11 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
     {
       program->SetUniformi("contactTiles", tiles[1]->GetTextureUnit());
       program->SetUniformi("contactTileSize", TileSize);
-      program->SetUniformi("earlyOut", this->UmbraEarlyOut ? 1 : 0);
-      program->SetUniformi("dilation", this->Dilation ? 1 : 0);
+      program->SetUniformi("contactEarlyOut", this->UmbraEarlyOut ? 1 : 0);
+      program->SetUniformi("contactDilation", this->Dilation ? 1 : 0);
       const std::vector<float> dilationTaps = ScaledTaps(taps, this->DilationSize);
-      program->SetUniform3fv("taps", this->PoissonTaps, dilationTaps.data());
-      program->SetUniformi("tapCount", this->PoissonTaps);
+      program->SetUniform3fv("contactTaps", this->PoissonTaps, dilationTaps.data());
+      program->SetUniformi("contactTapCount", this->PoissonTaps);
     },
     tolerance, this->DebugView, vtkShadowScreenBuffers::QuadMask::Write);
   tiles[1]->Deactivate();
@@ -498,8 +494,8 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
         [&](vtkShaderProgram* program)
         {
           const std::vector<float> passTaps = ScaledTaps(taps, size);
-          program->SetUniform3fv("taps", this->PoissonTaps, passTaps.data());
-          program->SetUniformi("tapCount", this->PoissonTaps);
+          program->SetUniform3fv("contactTaps", this->PoissonTaps, passTaps.data());
+          program->SetUniformi("contactTapCount", this->PoissonTaps);
         },
         tolerance, this->DebugView, vtkShadowScreenBuffers::QuadMask::Test,
         1.0f - static_cast<float>(pass) / 256.0f);
@@ -523,25 +519,25 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
       screen, in.Gaussian, filtered,
       [&](vtkShaderProgram* program)
       {
-        program->SetUniformi("maximumKernel", this->MaximumKernelSize);
-        program->SetUniform2i("direction", std::array<int, 2>{ 1, 0 }.data());
-        program->SetUniformi("lastPass", 0);
+        program->SetUniformi("contactMaximumKernel", this->MaximumKernelSize);
+        program->SetUniform2i("contactDirection", std::array<int, 2>{ 1, 0 }.data());
+        program->SetUniformi("contactLastPass", 0);
       },
       tolerance, this->DebugView);
     screen->UnbindTargets();
     toPacked(in.Gaussian, rows,
       [&](vtkShaderProgram* program)
       {
-        program->SetUniformi("maximumKernel", this->MaximumKernelSize);
-        program->SetUniform2i("direction", std::array<int, 2>{ 0, 1 }.data());
-        program->SetUniformi("lastPass", 1);
+        program->SetUniformi("contactMaximumKernel", this->MaximumKernelSize);
+        program->SetUniform2i("contactDirection", std::array<int, 2>{ 0, 1 }.data());
+        program->SetUniformi("contactLastPass", 1);
       });
   }
   else
   {
     toPacked(in.PCF, filtered,
       [&](vtkShaderProgram* program)
-      { program->SetUniformi("maximumKernel", this->MaximumKernelSize); });
+      { program->SetUniformi("contactMaximumKernel", this->MaximumKernelSize); });
   }
   state->PopFramebufferBindings();
 }

@@ -166,17 +166,12 @@ bool vtkReferenceShadowPass::AccumulateSample(const vtkRenderState* s, int slot,
     this->Screen->DrawQuad(internals.AccumulateCube.get(),
       [&](vtkShaderProgram* program)
       {
-        program->SetUniformi("sampleCube", map->GetTextureUnit());
-        const float center[3] = { static_cast<float>(eye.x), static_cast<float>(eye.y),
-          static_cast<float>(eye.z) };
-        program->SetUniform3f("sampleEye", center);
-        program->SetUniformf("sampleTexel", 2.0f / static_cast<float>(this->MapSize));
-        program->SetUniformf("sampleNormalBias", static_cast<float>(this->NormalBias));
-        program->SetUniformf("sampleDistanceBias", static_cast<float>(this->DistanceBias));
-        const double far = this->Maps->CubeFaces(eye)[0].Far;
-        program->SetUniformf(
-          "sampleRange", this->PackedCubeMaps ? static_cast<float>(far * far) : 0.0f);
-        program->SetUniformf("sampleWeight", weight);
+        program->SetUniformi("referenceCube", map->GetTextureUnit());
+        vtkShadowMapManager::SetCubeUniforms(
+          program, "reference", "", this->Maps->CubeFaces(eye), this->PackedCubeMaps);
+        vtkShadowMapManager::SetLookupUniforms(
+          program, "reference", this->MapSize, this->NormalBias, this->DistanceBias);
+        program->SetUniformf("referenceWeight", weight);
       });
   }
   else
@@ -184,10 +179,11 @@ bool vtkReferenceShadowPass::AccumulateSample(const vtkRenderState* s, int slot,
     this->Screen->DrawQuad(internals.Accumulate.get(),
       [&](vtkShaderProgram* program)
       {
-        program->SetUniformi("sampleMap", map->GetTextureUnit());
-        vtkShadowMapManager::SetFrustumUniforms(program, "sample", "", frustum, this->MapSize);
-        program->SetUniformf("sampleNormalBias", static_cast<float>(this->NormalBias));
-        program->SetUniformf("sampleWeight", weight);
+        program->SetUniformi("referenceMap", map->GetTextureUnit());
+        vtkShadowMapManager::SetFrustumUniforms(program, "reference", "", frustum, this->MapSize);
+        vtkShadowMapManager::SetLookupUniforms(
+          program, "reference", this->MapSize, this->NormalBias, this->DistanceBias);
+        program->SetUniformf("referenceWeight", weight);
       });
   }
   map->Deactivate();

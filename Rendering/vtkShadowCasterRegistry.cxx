@@ -10,6 +10,7 @@
 #include "vtkPolyDataMapper.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderer.h"
+#include "vtkShadowMatrices.h"
 #include "vtkSmartPointer.h"
 
 #include <glm/geometric.hpp>
@@ -53,14 +54,7 @@ void vtkShadowCasterRegistry::Update(vtkRenderer* renderer)
     caster.Prop = prop;
     caster.Actor = actor;
     caster.Opaque = actor->HasOpaqueGeometry() != 0;
-    vtkMatrix4x4* m = actor->GetMatrix();
-    for (int row = 0; row < 4; ++row)
-    {
-      for (int col = 0; col < 4; ++col)
-      {
-        caster.ModelToWorld[col][row] = m->GetElement(row, col);
-      }
-    }
+    caster.ModelToWorld = vtkShadowMatrices::FromVTK(actor->GetMatrix());
     caster.WorldToModel = glm::inverse(caster.ModelToWorld);
 
     // The input is up to date: the renderer asked the mappers for bounds.

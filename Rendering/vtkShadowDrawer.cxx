@@ -11,6 +11,7 @@
 #include "vtkRenderer.h"
 #include "vtkShadowCasterRegistry.h"
 #include "vtkShadowGeometry.h"
+#include "vtkShadowMatrices.h"
 #include "vtkShadowShaderHooks.h"
 #include "vtkShadowStage.h"
 #include "vtkTextureObject.h"
@@ -44,13 +45,7 @@ void vtkShadowDrawer::SetCamera(const vtkShadowDrawSetup::Frustum& frustum)
   camera->SetParallelProjection(frustum.Parallel);
   camera->SetClippingRange(frustum.Near, frustum.Far);
   vtkNew<vtkMatrix4x4> projection;
-  for (int row = 0; row < 4; ++row)
-  {
-    for (int col = 0; col < 4; ++col)
-    {
-      projection->SetElement(row, col, frustum.Projection[col][row]);
-    }
-  }
+  vtkShadowMatrices::ToVTK(frustum.Projection, projection);
   camera->SetExplicitProjectionTransformMatrix(projection);
   camera->SetUseExplicitProjectionTransformMatrix(true);
 }

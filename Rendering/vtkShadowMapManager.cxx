@@ -315,6 +315,26 @@ void vtkShadowMapManager::SetFrustumUniforms(vtkShaderProgram* program, const st
 }
 
 //------------------------------------------------------------------------------
+void vtkShadowMapManager::SetCubeUniforms(vtkShaderProgram* program, const std::string& prefix,
+  const std::string& index, const std::array<Frustum, 6>& faces, bool packed)
+{
+  const glm::vec3 center(faces[0].Eye);
+  const double far = faces[0].Far;
+  program->SetUniform3f((prefix + "CubeCenter" + index).c_str(), glm::value_ptr(center));
+  program->SetUniformf(
+    (prefix + "CubeRange" + index).c_str(), packed ? static_cast<float>(far * far) : 0.0f);
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowMapManager::SetLookupUniforms(vtkShaderProgram* program, const std::string& prefix,
+  int mapSize, double normalBias, double distanceBias)
+{
+  program->SetUniformf((prefix + "NormalBias").c_str(), static_cast<float>(normalBias));
+  program->SetUniformf((prefix + "CubeTexel").c_str(), 2.0f / static_cast<float>(mapSize));
+  program->SetUniformf((prefix + "DistanceBias").c_str(), static_cast<float>(distanceBias));
+}
+
+//------------------------------------------------------------------------------
 void vtkShadowMapManager::ReleaseGraphicsResources(vtkWindow* w)
 {
   for (auto& light : this->Lights)

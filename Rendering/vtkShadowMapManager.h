@@ -123,6 +123,23 @@ public:
   static void SetFrustumUniforms(vtkShaderProgram* program, const std::string& prefix,
     const std::string& index, const Frustum& frustum, int mapSize);
 
+  /**
+   * Upload what shaders need of a cube map for vtkShadowCubeLookupFS.glsl:
+   * `<prefix>CubeCenter<index>` (the light, the faces' common eye) and
+   * `<prefix>CubeRange<index>` (0 for a float map; far^2 of `faces` when
+   * `packed` into RGBA8).
+   */
+  static void SetCubeUniforms(vtkShaderProgram* program, const std::string& prefix,
+    const std::string& index, const std::array<Frustum, 6>& faces, bool packed);
+
+  /**
+   * The lookups' shared settings: `<prefix>NormalBias` (texels),
+   * `<prefix>CubeTexel` (a cube texel's size per unit of distance, for a
+   * `mapSize` map) and `<prefix>DistanceBias`.
+   */
+  static void SetLookupUniforms(vtkShaderProgram* program, const std::string& prefix, int mapSize,
+    double normalBias, double distanceBias);
+
   void ReleaseGraphicsResources(vtkWindow* w);
 
 private:

@@ -12,11 +12,14 @@
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
+#include "vtkShadowMatrices.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
 #include "vtkShadowPackFS.h"
 #include "vtkShadowScreenCommonFS.h"
+
+#include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm> // for std::any_of, std::fill, std::max, std::none_of
 #include <cmath>     // for std::log2, std::tan
@@ -92,13 +95,8 @@ bool vtkShadowScreenBuffers::Update(const vtkRenderState* s)
     camera->GetProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1, 1),
     camera->GetModelViewTransformMatrix(), clipToWorld);
   clipToWorld->Invert();
-  for (int row = 0; row < 4; ++row)
-  {
-    for (int col = 0; col < 4; ++col)
-    {
-      this->ClipToWorld[col * 4 + row] = static_cast<float>(clipToWorld->GetElement(row, col));
-    }
-  }
+  const glm::mat4 single(vtkShadowMatrices::FromVTK(clipToWorld));
+  std::copy(glm::value_ptr(single), glm::value_ptr(single) + 16, this->ClipToWorld);
   return true;
 }
 
@@ -142,9 +140,9 @@ void vtkShadowScreenBuffers::DrawQuad(vtkOpenGLQuadHelper* quad,
   }
   this->Context->GetShaderCache()->ReadyShaderProgram(quad->Program);
   this->CameraDepth->Activate();
-  quad->Program->SetUniformi("vtkScreenDepth", this->CameraDepth->GetTextureUnit());
-  quad->Program->SetUniformMatrix4x4("vtkScreenClipToWorld", this->ClipToWorld);
-  quad->Program->SetUniform3f("vtkScreenCameraPosition", this->CameraPosition);
+  quad->Program->SetUniformi("vtkShadowCameraDepth", this->CameraDepth->GetTextureUnit());
+  quad->Program->SetUniformMatrix4x4("vtkShadowCameraClipToWorld", this->ClipToWorld);
+  quad->Program->SetUniform3f("vtkShadowCameraPosition", this->CameraPosition);
   if (quad->Program->IsUniformUsed("vtkShadowCodesPerLog"))
   {
     quad->Program->SetUniformf("vtkShadowLogNear", this->LogNear);

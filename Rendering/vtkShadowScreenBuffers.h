@@ -5,8 +5,8 @@
  *          that reconstruct each pixel's world position.
  *
  * Part of the framework. A technique's screen-space pass is a fragment
- * shader body given to CreateQuad(); it gets `vtkScreenDepth`,
- * `vtkScreenPixel()` and `vtkScreenPositionWC()` from
+ * shader body given to CreateQuad(); it gets `vtkShadowCameraDepth`,
+ * `vtkShadowScreenPixel()` and `vtkShadowScreenPositionWC()` from
  * vtkShadowScreenCommonFS.glsl. Receivers read the visibility textures back
  * in vtkSoftShadowReceiverFS.glsl.
  */
@@ -52,7 +52,7 @@ public:
   /**
    * The camera depth of the opaque props, the buffers' size, which
    * vtkSoftShadowPass::RenderCameraDepth() draws and screen-space passes
-   * read (`vtkScreenDepth`).
+   * read (`vtkShadowCameraDepth`).
    */
   vtkTextureObject* GetCameraDepth() const { return this->CameraDepth; }
 

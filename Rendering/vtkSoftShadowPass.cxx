@@ -23,6 +23,7 @@
 #include "vtkShadowDrawer.h"
 #include "vtkShadowMapManager.h"
 #include "vtkShadowMapperCode.h"
+#include "vtkShadowMatrices.h"
 #include "vtkShadowScreenBuffers.h"
 #include "vtkShadowShaderHooks.h"
 #include "vtkShadowStage.h"
@@ -31,6 +32,7 @@
 
 #include "vtkShadowCubeLookupFS.h"
 #include "vtkShadowNormalOffsetFS.h"
+#include "vtkShadowSurfaceFS.h"
 #include "vtkSoftShadowReceiverFS.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -55,39 +57,25 @@ vtkStandardNewMacro(vtkSoftShadowPass::vtkDepthPrePassStep);
 
 namespace
 {
-glm::dmat4 ToGlm(vtkMatrix4x4* m)
-{
-  glm::dmat4 result;
-  for (int row = 0; row < 4; ++row)
-  {
-    for (int col = 0; col < 4; ++col)
-    {
-      result[col][row] = m->GetElement(row, col);
-    }
-  }
-  return result;
-}
-
 void SetMatrix(vtkShaderProgram* program, const std::string& name, const glm::dmat4& m)
 {
   glm::mat4 single(m);
   program->SetUniformMatrix4x4(name.c_str(), glm::value_ptr(single));
 }
 
-// The fragment's world position and geometric normal from derivatives: the
-// face's true orientation, which the normal offset needs (interpolated
-// normals lie on coarse meshes). Derivatives of the triangle's own
-// interpolants: right at silhouettes too, unlike a depth buffer's.
+// Each lit fragment's surface (vtkShadowSurfaceFS.glsl), as the camera pass
+// and the receivers' visibility expressions see it.
 const char* const SurfaceCode =
-  "  vec4 vtkShadowPositionWC = vtkShadowViewToWorld * vec4(vertexVCVSOutput.xyz, 1.0);\n"
-  "  vec3 vtkShadowNormalWC = normalize(mat3(vtkShadowViewToWorld) *\n"
-  "    cross(dFdx(vertexVCVSOutput.xyz), dFdy(vertexVCVSOutput.xyz)));\n";
+  "  vec4 vtkShadowPositionWC;\n"
+  "  vec3 vtkShadowNormalWC;\n"
+  "  vtkShadowSurface(vertexVCVSOutput.xyz, vtkShadowPositionWC, vtkShadowNormalWC);\n";
 
 // The camera's view to world matrix, for the surface code.
 void SetViewToWorld(vtkShaderProgram* program, vtkRenderer* renderer)
 {
   SetMatrix(program, "vtkShadowViewToWorld",
-    glm::inverse(ToGlm(renderer->GetActiveCamera()->GetModelViewTransformMatrix())));
+    glm::inverse(
+      vtkShadowMatrices::FromVTK(renderer->GetActiveCamera()->GetModelViewTransformMatrix())));
 }
 
 std::string Indexed(const char* name, int i)
@@ -127,7 +115,7 @@ public:
     std::string dec, impl;
     if (this->Targets > 0 && sources.IsLit())
     {
-      dec = "uniform mat4 vtkShadowViewToWorld;\n" + this->Pass->GetCameraPassDeclarations();
+      dec = std::string(vtkShadowSurfaceFS) + "\n" + this->Pass->GetCameraPassDeclarations();
       impl = std::string(SurfaceCode) + this->Pass->GetCameraPassImplementation();
     }
     else
@@ -211,7 +199,8 @@ void vtkSoftShadowPass::vtkReceiverStage::PostReplace(vtkShadowShaderSources& so
     {
       dec << "#define VTK_SHADOW_SCREEN_SPACE\n";
     }
-    dec << vtkShadowNormalOffsetFS << "\n"
+    dec << vtkShadowSurfaceFS << "\n"
+        << vtkShadowNormalOffsetFS << "\n"
         << vtkShadowCubeLookupFS << "\n"
         << vtkSoftShadowReceiverFS << "\n";
     for (const auto& texture : pass->FrameReceiverTextures)
@@ -292,9 +281,8 @@ void vtkSoftShadowPass::vtkReceiverStage::SetUniforms(vtkShaderProgram* program,
   program->SetUniformf("vtkShadowMapTexel", 1.0f / static_cast<float>(pass->MapSize));
   program->SetUniformi("vtkShadowPCFRadius", pass->GetPCFRadius());
   program->SetUniformi("vtkShadowPCFBilinear", pass->GetPCFBilinear() ? 1 : 0);
-  program->SetUniformf("vtkShadowNormalBias", static_cast<float>(pass->NormalBias));
-  program->SetUniformf("vtkShadowCubeTexel", 2.0f / static_cast<float>(pass->MapSize));
-  program->SetUniformf("vtkShadowDistanceBias", static_cast<float>(pass->DistanceBias));
+  vtkShadowMapManager::SetLookupUniforms(
+    program, "vtkShadow", pass->MapSize, pass->NormalBias, pass->DistanceBias);
 
   const auto& lights = pass->Maps->GetLights();
   for (size_t slot = 0; slot < lights.size(); ++slot)
@@ -307,11 +295,8 @@ void vtkSoftShadowPass::vtkReceiverStage::SetUniforms(vtkShaderProgram* program,
     {
       program->SetUniformi(
         Indexed("vtkShadowCube", light.MapIndex).c_str(), light.CubeMap->GetTextureUnit());
-      const float center[3] = { static_cast<float>(light.Position.x),
-        static_cast<float>(light.Position.y), static_cast<float>(light.Position.z) };
-      program->SetUniform3f(Indexed("vtkShadowCubeCenter", light.MapIndex).c_str(), center);
-      program->SetUniformf(Indexed("vtkShadowCubeRange", light.MapIndex).c_str(),
-        pass->PackedCubeMaps ? static_cast<float>(light.Faces[0].Far * light.Faces[0].Far) : 0.0f);
+      vtkShadowMapManager::SetCubeUniforms(program, "vtkShadow",
+        "[" + std::to_string(light.MapIndex) + "]", light.Faces, pass->PackedCubeMaps);
       continue;
     }
     vtkShadowMapManager::SetFrustumUniforms(

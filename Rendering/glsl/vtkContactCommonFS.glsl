@@ -5,6 +5,7 @@
 // or has touched the pixel (elsewhere receivers keep their own
 // full-resolution hard shadow), b = the surface's camera distance (0 on
 // background), a = D (<= 0: not blurred).
+// Uses: vtkShadowScreenCommonFS.glsl (vtkShadowPackTexel).
 uniform sampler2D contactMap;
 uniform float contactDepthTolerance;
 uniform bool contactDebugView;

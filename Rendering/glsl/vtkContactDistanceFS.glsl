@@ -16,6 +16,8 @@
 // at most CONTACT_PASS_LIMIT), and per light whether its map is a
 // perspective one. A software rasterizer runs both arms of a branch, even
 // on a uniform, and this code runs on every fragment the camera draws.
+// Uses: vtkShadowSurfaceFS.glsl (vtkShadowViewToWorld), vtkShadowNormalOffsetFS.glsl,
+//   vtkShadowCubeLookupFS.glsl.
 #if CONTACT_MAPS > 0
 uniform sampler2D contactLightDepth[CONTACT_MAPS];
 #endif
@@ -35,11 +37,11 @@ uniform float contactDistanceBias;
 uniform float contactNormalBias;
 
 #if CONTACT_LIGHT_SIZE
-uniform vec2 pixelFootprint; // world size of a buffer pixel: x + y * camera distance
+uniform vec2 contactPixelFootprint; // world size of a buffer pixel: x + y * camera distance
 #else
-uniform float distancePower;
-uniform float distanceMultiplier;
-uniform float resolutionDivisor; // viewport pixels per pixel of the buffers
+uniform float contactDistancePower;
+uniform float contactDistanceMultiplier;
+uniform float contactResolutionDivisor; // viewport pixels per pixel of the buffers
 #endif
 
 // Distance along a 2D map's axis for its depth in [0,1].
@@ -51,7 +53,7 @@ float vtkContactLightDistance(int k, float depth, bool perspective)
 }
 
 #if CONTACT_LIGHT_SIZE && CONTACT_COUNT_PASSES
-// passMidpoints[CONTACT_PASS_LIMIT], declared before this file as constants
+// contactPassMidpoints[CONTACT_PASS_LIMIT], declared before this file as constants
 // (llvmpipe reloads a uniform at every compare; against immediates the
 // count costs a sixth as much): the variance (pixels^2) halfway between that
 // of k and of k + 1 blurs (blur variances add).
@@ -66,7 +68,7 @@ float vtkContactPassesFor(float width)
   float passes = 0.0;
   for (int k = 0; k < CONTACT_PASS_LIMIT; ++k)
   {
-    passes += passMidpoints[k] < target ? 1.0 : 0.0;
+    passes += contactPassMidpoints[k] < target ? 1.0 : 0.0;
   }
   return passes;
 }
@@ -90,7 +92,7 @@ void vtkContactCameraSetup(vec4 positionWC, vec3 normal)
   // way along the slope's level lines, where a narrower blur costs less.
   float facing = abs(dot(normal, (camera - positionWC.xyz) / contactCameraDistance));
   contactPixelsPerLength =
-    facing / (pixelFootprint.x + pixelFootprint.y * contactCameraDistance);
+    facing / (contactPixelFootprint.x + contactPixelFootprint.y * contactCameraDistance);
 #endif
 }
 
@@ -106,10 +108,10 @@ vec4 vtkContactShadowed(int k, float receiverDistance, float blockerDistance, bo
 #endif
 #else
   // Dp and Dm are tuned in full-resolution pixels: a kernel
-  // `resolutionDivisor` times smaller covers as much, and a blur pass
+  // `contactResolutionDivisor` times smaller covers as much, and a blur pass
   // spreads as far as divisor^2 full-resolution ones (variances add).
-  float d = pow(occluderDistance, distancePower) * distanceMultiplier /
-    (CONTACT_COUNT_PASSES > 0 ? resolutionDivisor * resolutionDivisor : resolutionDivisor);
+  float d = pow(occluderDistance, contactDistancePower) * contactDistanceMultiplier /
+    (CONTACT_COUNT_PASSES > 0 ? contactResolutionDivisor * contactResolutionDivisor : contactResolutionDivisor);
 #endif
   return vec4(0.0, 0.0, contactCameraDistance, d);
 }
@@ -124,9 +126,8 @@ vec4 vtkContactDistance(sampler2D map, int k, bool perspective, vec4 positionWC,
 {
   vec4 receiver = vtkShadowNormalOffset(
     positionWC, normal, contactEye[k], contactAxis[k], contactFootprint[k], contactNormalBias);
-  vec4 p = contactWorldToMap[k] * receiver;
-  p.xyz /= p.w;
-  if (p.w <= 0.0 || any(lessThan(p.xyz, vec3(0.0))) || any(greaterThan(p.xyz, vec3(1.0))))
+  vec3 p;
+  if (!vtkShadowInMap(contactWorldToMap[k], receiver, p))
   {
     return vtkContactLit();
   }

@@ -3,18 +3,19 @@
 // pixels (clamped to the maximum; sigma = size / 3), run once along x, then
 // along y writing pass 5's visibility. The texel just beyond D / 2 counts in
 // part, so the result changes smoothly with D.
-uniform int maximumKernel;
-uniform ivec2 direction;
-uniform bool lastPass;
+// Uses: vtkShadowScreenCommonFS.glsl, vtkContactCommonFS.glsl.
+uniform int contactMaximumKernel;
+uniform ivec2 contactDirection;
+uniform bool contactLastPass;
 
 void main()
 {
-  ivec2 pixel = vtkScreenPixel();
+  ivec2 pixel = vtkShadowScreenPixel();
   vec4 c = vtkContactFetch(pixel);
   float v = c.r;
   if (c.a > 0.0)
   {
-    float size = min(c.a, float(maximumKernel));
+    float size = min(c.a, float(contactMaximumKernel));
     float reach = size * 0.5;
     int radius = int(reach) + 1;
     float sigma = max(size / 3.0, 0.5);
@@ -22,7 +23,7 @@ void main()
     float weights = 0.0;
     for (int i = -radius; i <= radius; ++i)
     {
-      vec4 t = vtkContactFetch(pixel + i * direction);
+      vec4 t = vtkContactFetch(pixel + i * contactDirection);
       if (vtkContactSameSurface(c, t))
       {
         float w = exp(-0.5 * float(i * i) / (sigma * sigma)) *
@@ -33,5 +34,5 @@ void main()
     }
     v = sum / weights;
   }
-  gl_FragData[0] = lastPass ? vtkContactOutput(c, v) : vec4(v, c.gba);
+  gl_FragData[0] = contactLastPass ? vtkContactOutput(c, v) : vec4(v, c.gba);
 }

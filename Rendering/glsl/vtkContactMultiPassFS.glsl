@@ -5,26 +5,27 @@
 // those still blurring, and those whose D ran out in the pass before, copied
 // so that both ping-pong buffers agree on them from then on. Each also
 // writes its code into the receivers' texture.
-uniform vec3 taps[64]; // offsets in pixels for this pass's kernel, and weights
-uniform int tapCount;
+// Uses: vtkShadowScreenCommonFS.glsl, vtkContactCommonFS.glsl.
+uniform vec3 contactTaps[64]; // offsets in pixels for this pass's kernel, and weights
+uniform int contactTapCount;
 
 void main()
 {
-  ivec2 pixel = vtkScreenPixel();
+  ivec2 pixel = vtkShadowScreenPixel();
   vec4 c = vtkContactFetch(pixel);
   vec4 texel = c;
   if (c.a > 0.0)
   {
     // Tap 0 lies at the origin: this pixel.
-    float sum = taps[0].z * c.r;
-    float weights = taps[0].z;
-    for (int i = 1; i < tapCount; ++i)
+    float sum = contactTaps[0].z * c.r;
+    float weights = contactTaps[0].z;
+    for (int i = 1; i < contactTapCount; ++i)
     {
-      vec4 t = vtkContactFetch(pixel + ivec2(taps[i].xy));
+      vec4 t = vtkContactFetch(pixel + ivec2(contactTaps[i].xy));
       if (vtkContactSameSurface(c, t))
       {
-        sum += taps[i].z * t.r;
-        weights += taps[i].z;
+        sum += contactTaps[i].z * t.r;
+        weights += contactTaps[i].z;
       }
     }
     texel = vec4(sum / weights, c.g, c.b, max(c.a - 1.0, 0.0));

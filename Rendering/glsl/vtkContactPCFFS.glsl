@@ -2,16 +2,17 @@
 // (clamped to the maximum), then pass 5's visibility. Texels count by how
 // much of them the kernel covers, so the result changes smoothly with D
 // (a kernel of whole texels makes steps where D crosses an odd number).
-uniform int maximumKernel;
+// Uses: vtkShadowScreenCommonFS.glsl, vtkContactCommonFS.glsl.
+uniform int contactMaximumKernel;
 
 void main()
 {
-  ivec2 pixel = vtkScreenPixel();
+  ivec2 pixel = vtkShadowScreenPixel();
   vec4 c = vtkContactFetch(pixel);
   float v = c.r;
   if (c.a > 0.0)
   {
-    float reach = min(c.a, float(maximumKernel)) * 0.5;
+    float reach = min(c.a, float(contactMaximumKernel)) * 0.5;
     int radius = int(ceil(reach - 0.5));
     float sum = 0.0;
     float count = 0.0;

@@ -10,38 +10,39 @@
 // Both neighbourhood questions are answered by the tile classification
 // (vtkContactTileSpreadFS.glsl) with one fetch: a software rasterizer shades
 // both arms of a branch, but a loop ends once no pixel of a group runs it.
-uniform bool earlyOut;
-uniform bool dilation;
-uniform vec3 taps[64]; // offsets in pixels over the dilation kernel, and weights
-uniform int tapCount;
+// Uses: vtkShadowScreenCommonFS.glsl, vtkContactCommonFS.glsl.
+uniform bool contactEarlyOut;
+uniform bool contactDilation;
+uniform vec3 contactTaps[64]; // offsets in pixels over the dilation kernel, and weights
+uniform int contactTapCount;
 uniform sampler2D contactTiles;
 uniform int contactTileSize;
 
 void main()
 {
-  ivec2 pixel = vtkScreenPixel();
+  ivec2 pixel = vtkShadowScreenPixel();
   vec4 c = vtkContactFetch(pixel);
   float d = c.a;
   vec2 tiles = texelFetch(contactTiles, pixel / contactTileSize, 0).xy;
-  if (d > 0.0 && earlyOut && tiles.x >= 1.0)
+  if (d > 0.0 && contactEarlyOut && tiles.x >= 1.0)
   {
     d = 0.0;
   }
-  else if (c.r == 1.0 && c.b > 0.0 && dilation)
+  else if (c.r == 1.0 && c.b > 0.0 && contactDilation)
   {
     // Lit pixels near a shadow take the weighted mean D of the shadowed taps.
     // D varies slowly: 8 taps are enough (tap 0, this lit pixel, never
     // counts). None without a shadow in reach.
     float sum = 0.0;
     float weights = 0.0;
-    int count = tiles.y > 0.0 ? min(tapCount, 8) : 0;
+    int count = tiles.y > 0.0 ? min(contactTapCount, 8) : 0;
     for (int i = 1; i < count; ++i)
     {
-      vec4 t = vtkContactFetch(pixel + ivec2(taps[i].xy));
+      vec4 t = vtkContactFetch(pixel + ivec2(contactTaps[i].xy));
       if (t.r < 1.0 && vtkContactSameSurface(c, t))
       {
-        sum += taps[i].z * t.a;
-        weights += taps[i].z;
+        sum += contactTaps[i].z * t.a;
+        weights += contactTaps[i].z;
       }
     }
     d = weights > 0.0 ? sum / weights : 0.0;

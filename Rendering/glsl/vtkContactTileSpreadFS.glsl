@@ -4,24 +4,25 @@
 //   x: least S over the early-out's reach: 1 where all of it is shadowed,
 //   y: greatest S over the dilation's reach: 0 where none of it is.
 // Both err on the safe side: a pixel near a tile's middle sees farther.
-uniform int earlyOutTiles;
-uniform int dilationTiles;
+// Uses: vtkShadowScreenCommonFS.glsl, vtkContactCommonFS.glsl.
+uniform int contactEarlyOutTiles;
+uniform int contactDilationTiles;
 
 void main()
 {
   ivec2 tile = ivec2(texCoord * vec2(textureSize(contactMap, 0)));
   float least = 1.0;
-  for (int y = -earlyOutTiles; y <= earlyOutTiles; ++y)
+  for (int y = -contactEarlyOutTiles; y <= contactEarlyOutTiles; ++y)
   {
-    for (int x = -earlyOutTiles; x <= earlyOutTiles; ++x)
+    for (int x = -contactEarlyOutTiles; x <= contactEarlyOutTiles; ++x)
     {
       least = min(least, vtkContactFetch(tile + ivec2(x, y)).r);
     }
   }
   float greatest = 0.0;
-  for (int y = -dilationTiles; y <= dilationTiles; ++y)
+  for (int y = -contactDilationTiles; y <= contactDilationTiles; ++y)
   {
-    for (int x = -dilationTiles; x <= dilationTiles; ++x)
+    for (int x = -contactDilationTiles; x <= contactDilationTiles; ++x)
     {
       greatest = max(greatest, vtkContactFetch(tile + ivec2(x, y)).g);
     }

@@ -5,6 +5,7 @@
 // are umbra anyway). S is 0 or 1 there, so a bilinear tap on a texel
 // corner, the mean of four, is 1 only if all four are and 0 only if none
 // is: a quarter of the fetches.
+// Uses: vtkShadowScreenCommonFS.glsl, vtkContactCommonFS.glsl.
 uniform int contactTileSize;
 
 void main()

@@ -5,6 +5,8 @@
 // (w_penumbra = (d_receiver - d_blocker) w_light / d_blocker), and a
 // percentage-closer filter over Poisson taps of that radius, rotated per
 // pixel against banding, gives the visibility.
+// Uses: vtkShadowCubeLookupFS.glsl, vtkSoftShadowReceiverFS.glsl (vtkShadowCubeTexel,
+//   vtkShadowNormalBias, vtkShadowDistanceBias).
 uniform vec2 omniPoisson[32]; // a Poisson disk in the unit disc
 uniform int omniTaps;
 uniform float omniLightRadius[VTK_SHADOW_CUBES];

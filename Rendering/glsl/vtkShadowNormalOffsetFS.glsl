@@ -17,3 +17,13 @@ vec4 vtkShadowNormalOffset(
   float texel = footprint.x + footprint.y * distance;
   return vec4(positionWC.xyz + n * (texel * texels), 1.0);
 }
+
+// The map coordinates ([0,1]^3) of a world point in `map`, and whether the
+// point lies in the map's frustum (in front of its eye, inside its bounds):
+// what lies outside is lit.
+bool vtkShadowInMap(mat4 worldToMap, vec4 positionWC, out vec3 map)
+{
+  vec4 p = worldToMap * positionWC;
+  map = p.xyz / p.w;
+  return p.w > 0.0 && all(greaterThanEqual(map, vec3(0.0))) && all(lessThanEqual(map, vec3(1.0)));
+}

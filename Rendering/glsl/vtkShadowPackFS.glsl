@@ -1,10 +1,11 @@
 // Codes a light's visibility texture for the receivers
 // (vtkShadowPackTexel(), vtkShadowScreenCommonFS.glsl), for techniques that
 // draw visibility textures rather than the codes themselves.
+// Uses: vtkShadowScreenCommonFS.glsl.
 uniform sampler2D vtkShadowVisibility;
 
 void main()
 {
   gl_FragData[0] =
-    vec4(vtkShadowPackTexel(texelFetch(vtkShadowVisibility, vtkScreenPixel(), 0)), 0.0, 0.0, 0.0);
+    vec4(vtkShadowPackTexel(texelFetch(vtkShadowVisibility, vtkShadowScreenPixel(), 0)), 0.0, 0.0, 0.0);
 }

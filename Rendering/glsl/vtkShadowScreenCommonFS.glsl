@@ -4,9 +4,9 @@
 // Shared by every screen-space shadow pass: the camera depth pre-pass and
 // the matrix taking its clip coordinates back to world coordinates.
 in vec2 texCoord;
-uniform sampler2D vtkScreenDepth;
-uniform mat4 vtkScreenClipToWorld;
-uniform vec3 vtkScreenCameraPosition;
+uniform sampler2D vtkShadowCameraDepth;
+uniform mat4 vtkShadowCameraClipToWorld;
+uniform vec3 vtkShadowCameraPosition;
 
 // The receivers' code of a visibility texel (r = visibility, g = 1 where r is
 // valid, b = camera distance; vtkShadowScreenBuffers::BeginVisibility()):
@@ -28,49 +28,49 @@ float vtkShadowPackTexel(vec4 t)
 
 // This pixel. From texCoord rather than gl_FragCoord so that every pass uses
 // the quad's texture coordinates (VTK's quad helper binds them).
-ivec2 vtkScreenPixel()
+ivec2 vtkShadowScreenPixel()
 {
-  return ivec2(texCoord * vec2(textureSize(vtkScreenDepth, 0)));
+  return ivec2(texCoord * vec2(textureSize(vtkShadowCameraDepth, 0)));
 }
 
-float vtkScreenDepthAt(ivec2 pixel)
+float vtkShadowCameraDepthAt(ivec2 pixel)
 {
-  ivec2 last = textureSize(vtkScreenDepth, 0) - 1;
-  return texelFetch(vtkScreenDepth, clamp(pixel, ivec2(0), last), 0).r;
+  ivec2 last = textureSize(vtkShadowCameraDepth, 0) - 1;
+  return texelFetch(vtkShadowCameraDepth, clamp(pixel, ivec2(0), last), 0).r;
 }
 
 // Depth 1.0 is background: no surface, nothing to shadow.
-bool vtkScreenHasSurface(out float depth)
+bool vtkShadowScreenHasSurface(out float depth)
 {
-  depth = vtkScreenDepthAt(vtkScreenPixel());
+  depth = vtkShadowCameraDepthAt(vtkShadowScreenPixel());
   return depth < 1.0;
 }
 
 // World position of the surface at texture coordinate `uv` (this pixel's:
 // texCoord) and camera depth `depth`.
-vec3 vtkScreenPositionWC(vec2 uv, float depth)
+vec3 vtkShadowScreenPositionWC(vec2 uv, float depth)
 {
-  vec4 world = vtkScreenClipToWorld * vec4(uv * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
+  vec4 world = vtkShadowCameraClipToWorld * vec4(uv * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
   return world.xyz / world.w;
 }
 
 // Geometric normal from the depth buffer: on each axis, the difference to
 // the neighbour nearer in depth, which most likely lies on the same surface.
-vec3 vtkScreenNormalWC(float depth, vec3 positionWC)
+vec3 vtkShadowScreenNormalWC(float depth, vec3 positionWC)
 {
-  ivec2 pixel = vtkScreenPixel();
-  vec2 texel = 1.0 / vec2(textureSize(vtkScreenDepth, 0));
-  float left = vtkScreenDepthAt(pixel - ivec2(1, 0));
-  float right = vtkScreenDepthAt(pixel + ivec2(1, 0));
-  float down = vtkScreenDepthAt(pixel - ivec2(0, 1));
-  float up = vtkScreenDepthAt(pixel + ivec2(0, 1));
+  ivec2 pixel = vtkShadowScreenPixel();
+  vec2 texel = 1.0 / vec2(textureSize(vtkShadowCameraDepth, 0));
+  float left = vtkShadowCameraDepthAt(pixel - ivec2(1, 0));
+  float right = vtkShadowCameraDepthAt(pixel + ivec2(1, 0));
+  float down = vtkShadowCameraDepthAt(pixel - ivec2(0, 1));
+  float up = vtkShadowCameraDepthAt(pixel + ivec2(0, 1));
   // Pick the side first, then rebuild one position an axis: shaders on a
   // software rasterizer evaluate both arms of a selection.
   float sx = abs(right - depth) < abs(left - depth) ? 1.0 : -1.0;
   float sy = abs(up - depth) < abs(down - depth) ? 1.0 : -1.0;
   vec3 dx = sx *
-    (vtkScreenPositionWC(texCoord + vec2(sx * texel.x, 0.0), sx > 0.0 ? right : left) - positionWC);
+    (vtkShadowScreenPositionWC(texCoord + vec2(sx * texel.x, 0.0), sx > 0.0 ? right : left) - positionWC);
   vec3 dy = sy *
-    (vtkScreenPositionWC(texCoord + vec2(0.0, sy * texel.y), sy > 0.0 ? up : down) - positionWC);
+    (vtkShadowScreenPositionWC(texCoord + vec2(0.0, sy * texel.y), sy > 0.0 ? up : down) - positionWC);
   return normalize(cross(dx, dy));
 }

@@ -3,8 +3,8 @@
 // lights), VTK_SHADOW_MAPS and VTK_SHADOW_CUBES (how many of them have a 2D
 // map, a cube map) and, for screen-space techniques, VTK_SHADOW_SCREEN_SPACE
 // are defined. Sampler arrays are indexed with constants only (GLSL 1.50).
+// Uses: vtkShadowSurfaceFS.glsl, vtkShadowNormalOffsetFS.glsl, vtkShadowCubeLookupFS.glsl.
 
-uniform mat4 vtkShadowViewToWorld;
 uniform mat4 vtkShadowWorldToMap[VTK_SHADOW_LIGHTS];
 uniform float vtkShadowAttenuation[VTK_SHADOW_LIGHTS];
 uniform vec4 vtkShadowEye[VTK_SHADOW_LIGHTS];
@@ -33,13 +33,8 @@ uniform sampler2DShadow vtkShadowMap[VTK_SHADOW_MAPS];
 
 float vtkShadowLookup(sampler2DShadow map, mat4 worldToMap, vec4 positionWC, int radius)
 {
-  vec4 p = worldToMap * positionWC;
-  if (p.w <= 0.0)
-  {
-    return 1.0;
-  }
-  p.xyz /= p.w;
-  if (any(lessThan(p.xyz, vec3(0.0))) || any(greaterThan(p.xyz, vec3(1.0))))
+  vec3 p;
+  if (!vtkShadowInMap(worldToMap, positionWC, p))
   {
     return 1.0;
   }
