@@ -1,12 +1,13 @@
 #include "vtkShadowMapManager.h"
 
+#include "vtkInformation.h"
+#include "vtkInformationDoubleKey.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMath.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
-#include "vtkSoftShadowPass.h"
 #include "vtkTextureObject.h"
 
 #include <glm/geometric.hpp>
@@ -53,6 +54,18 @@ vtkShadowMapManager::vtkShadowMapManager()
 }
 
 vtkShadowMapManager::~vtkShadowMapManager() = default;
+
+vtkInformationKeyMacro(vtkShadowMapManager, RADIUS, Double);
+
+//------------------------------------------------------------------------------
+double vtkShadowMapManager::GetRadius(vtkLight* light)
+{
+  if (!light || !light->GetInformation()->Has(vtkShadowMapManager::RADIUS()))
+  {
+    return 0.0;
+  }
+  return light->GetInformation()->Get(vtkShadowMapManager::RADIUS());
+}
 
 //------------------------------------------------------------------------------
 double vtkShadowMapManager::Light::GetSize() const
@@ -106,7 +119,7 @@ int vtkShadowMapManager::Update(vtkRenderer* renderer)
     light.SceneIndex = sceneIndex;
     light.ShaderIndex = shaderIndex;
     light.Directional = !source->GetPositional();
-    light.Radius = vtkSoftShadowPass::GetRadius(source);
+    light.Radius = vtkShadowMapManager::GetRadius(source);
     light.ConeAngle = source->GetConeAngle();
     light.Attenuation = source->GetShadowAttenuation();
     const double* p = source->GetTransformedPosition();

@@ -22,6 +22,7 @@
 #include <string> // for std::string
 #include <vector> // for std::vector
 
+class vtkInformationDoubleKey;
 class vtkLight;
 class vtkOpenGLRenderWindow;
 class vtkRenderer;
@@ -78,6 +79,15 @@ public:
 
   vtkShadowMapManager();
   ~vtkShadowMapManager();
+
+  ///@{
+  /**
+   * The light's size, stored in its information (vtkSoftShadowPass::SetRadius()
+   * and GetRadius() are the public face of this key): 0 when not set.
+   */
+  static vtkInformationDoubleKey* RADIUS();
+  static double GetRadius(vtkLight* light);
+  ///@}
 
   /**
    * Collect the lights that cast shadows and fit their frusta to the bounds of

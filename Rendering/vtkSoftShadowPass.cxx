@@ -41,8 +41,6 @@
 #include <algorithm>
 #include <sstream>
 
-vtkInformationKeyMacro(vtkSoftShadowPass, RADIUS, Double);
-
 // The depth-only pre-pass as a step of the delegate's opaque sequence: it
 // runs after the camera pass has cleared and set up the frame.
 class vtkSoftShadowPass::vtkDepthPrePassStep : public vtkRenderPass
@@ -348,17 +346,19 @@ void vtkSoftShadowPass::SetRadius(double radius, vtkLight* light)
     vtkGenericWarningMacro("vtkSoftShadowPass::SetRadius: radius must be >= 0, got " << radius);
     return;
   }
-  light->GetInformation()->Set(vtkSoftShadowPass::RADIUS(), radius);
+  light->GetInformation()->Set(vtkShadowMapManager::RADIUS(), radius);
 }
 
 //------------------------------------------------------------------------------
 double vtkSoftShadowPass::GetRadius(vtkLight* light)
 {
-  if (!light || !light->GetInformation()->Has(vtkSoftShadowPass::RADIUS()))
-  {
-    return 0.0;
-  }
-  return light->GetInformation()->Get(vtkSoftShadowPass::RADIUS());
+  return vtkShadowMapManager::GetRadius(light);
+}
+
+//------------------------------------------------------------------------------
+vtkInformationDoubleKey* vtkSoftShadowPass::RADIUS()
+{
+  return vtkShadowMapManager::RADIUS();
 }
 
 //------------------------------------------------------------------------------
