@@ -1,0 +1,66 @@
+#include "vtkShadowTexelGridPass.h"
+
+#include "vtkObjectFactory.h"
+#include "vtkShaderProgram.h"
+#include "vtkShadowMapManager.h"
+
+vtkStandardNewMacro(vtkShadowTexelGridPass);
+
+vtkShadowTexelGridPass::vtkShadowTexelGridPass() = default;
+vtkShadowTexelGridPass::~vtkShadowTexelGridPass() = default;
+
+//------------------------------------------------------------------------------
+bool vtkShadowTexelGridPass::RenderShadowMaps(const vtkRenderState* s)
+{
+  // Nearest filtering: one texel, one square of the checkerboard.
+  return this->RenderLightDepthMaps(s, false);
+}
+
+//------------------------------------------------------------------------------
+std::string vtkShadowTexelGridPass::GetVisibilityDeclarations()
+{
+  // After the framework's receiver code: vtkShadowLookup() and
+  // vtkShadowInMap() come from there.
+  return R"(
+uniform float texelGridContrast;
+
+float vtkTexelGrid(sampler2DShadow map, mat4 worldToMap, vec4 positionWC)
+{
+  float lit = vtkShadowLookup(map, worldToMap, positionWC, 0);
+  vec3 p;
+  if (!vtkShadowInMap(worldToMap, positionWC, p))
+  {
+    return lit;
+  }
+  ivec2 texel = ivec2(floor(p.xy * vec2(textureSize(map, 0))));
+  return lit * (1.0 - texelGridContrast * float((texel.x + texel.y) & 1));
+}
+)";
+}
+
+//------------------------------------------------------------------------------
+std::string vtkShadowTexelGridPass::GetVisibilityExpression(int slot)
+{
+  const auto& light = this->Maps->GetLights()[slot];
+  if (light.Point)
+  {
+    return this->Superclass::GetVisibilityExpression(slot);
+  }
+  const std::string i = std::to_string(slot);
+  return "vtkTexelGrid(vtkShadowMap[" + std::to_string(light.MapIndex) +
+    "], vtkShadowWorldToMap[" + i + "], vtkShadowReceiver(" + i +
+    ", vtkShadowPositionWC, vtkShadowNormalWC))";
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowTexelGridPass::SetVisibilityUniforms(vtkShaderProgram* program)
+{
+  program->SetUniformf("texelGridContrast", static_cast<float>(this->Contrast));
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowTexelGridPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Contrast: " << this->Contrast << "\n";
+}

@@ -1,0 +1,52 @@
+/**
+ * @class   vtkShadowTexelGridPass
+ * @brief   A debugging technique written outside the module: hard shadows
+ *          with each light's shadow-map texels drawn on the receivers as a
+ *          checkerboard, to see where a map's resolution runs out.
+ *
+ * It shows what a technique needs of the framework (docs/architecture.md,
+ * "Writing a technique"): the light depth maps drawn by RenderShadowMaps(),
+ * a GLSL function of its own (GetVisibilityDeclarations()), the expression
+ * that gives each light's visibility (GetVisibilityExpression()) from the
+ * framework's receiver code, and its own uniform (SetVisibilityUniforms()).
+ * Point lights fall to the framework's own cube lookup, unchecked.
+ */
+
+#ifndef vtkShadowTexelGridPass_h
+#define vtkShadowTexelGridPass_h
+
+#include "vtkSoftShadowPass.h"
+
+class vtkShadowTexelGridPass : public vtkSoftShadowPass
+{
+public:
+  static vtkShadowTexelGridPass* New();
+  vtkTypeMacro(vtkShadowTexelGridPass, vtkSoftShadowPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * How much darker the odd texels are drawn, in [0, 1]. Default 0.35.
+   */
+  vtkSetClampMacro(Contrast, double, 0.0, 1.0);
+  vtkGetMacro(Contrast, double);
+  ///@}
+
+protected:
+  vtkShadowTexelGridPass();
+  ~vtkShadowTexelGridPass() override;
+
+  bool RenderShadowMaps(const vtkRenderState* s) override;
+  bool SupportsPointLights() const override { return true; }
+  std::string GetVisibilityDeclarations() override;
+  std::string GetVisibilityExpression(int slot) override;
+  void SetVisibilityUniforms(vtkShaderProgram* program) override;
+
+  double Contrast = 0.35;
+
+private:
+  vtkShadowTexelGridPass(const vtkShadowTexelGridPass&) = delete;
+  void operator=(const vtkShadowTexelGridPass&) = delete;
+};
+
+#endif
