@@ -7,15 +7,21 @@
  * Render() runs the same steps for every technique:
  *
  *  1. decide which lights cast shadows and fit their light-space frusta
- *     (spot: perspective; directional: orthographic around the scene),
- *  2. RenderShadowMaps(): the technique draws its light-space maps,
+ *     (spot: perspective; directional: orthographic around the scene; point:
+ *     six cube faces) in this->Maps, and collect this frame's casters in
+ *     this->Casters,
+ *  2. RenderShadowMaps(): the technique draws its light-space maps, through
+ *     this->Drawer (Draw(), RenderLightDepthMaps()),
  *  3. RenderScreenSpace(): optional screen-space passes over the camera depth
- *     (RenderCameraDepth(), which can run technique code on every fragment),
+ *     (RenderCameraDepth(), which can run technique code on every fragment)
+ *     into this->Screen,
  *  4. the scene is drawn through the DelegatePass (opaque, translucent,
- *     volumes, overlay) while this pass, registered on every prop, injects
- *     `vtkShadowFactorN` into the fragment shader of each
- *     vtkOpenGLPolyDataMapper and scales light N's diffuse and specular
+ *     volumes, overlay) while the receiver stage, reached by every
+ *     vtkOpenGLPolyDataMapper's shader hooks, injects `vtkShadowFactorN`
+ *     (GetVisibilityExpression()) and scales light N's diffuse and specular
  *     (Phong) or radiance (PBR) with it.
+ *
+ * docs/architecture.md walks through writing a technique.
  *
  * A light casts shadows when it is switched on and is not a headlight: spot
  * lights (cone angle < 90) and directional lights through 2D maps, point
