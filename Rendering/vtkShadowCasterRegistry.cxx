@@ -2,9 +2,10 @@
 
 #include "vtkActor.h"
 #include "vtkCompositeDataDisplayAttributes.h"
-#include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkCompositePolyDataMapper2.h"
+#include "vtkDataObjectTree.h"
+#include "vtkDataObjectTreeIterator.h"
 #include "vtkMatrix4x4.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
@@ -26,6 +27,44 @@ glm::dvec3 vtkShadowCaster::PointToModel(const glm::dvec3& world) const
 glm::dvec3 vtkShadowCaster::DirectionToModel(const glm::dvec3& world) const
 {
   return glm::normalize(glm::dvec3(this->WorldToModel * glm::dvec4(world, 0.0)));
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowCasterRegistry::AddBlocks(vtkDataObject* node, bool visible, unsigned int& flatIndex,
+  vtkCompositeDataDisplayAttributes* attributes, const vtkShadowCaster& actor)
+{
+  // Flat indices count every node, empty ones too, depth first, as the
+  // composite mapper's do; a block's visibility is inherited by its children.
+  const unsigned int index = flatIndex++;
+  if (!node)
+  {
+    return;
+  }
+  if (attributes && attributes->HasBlockVisibility(node))
+  {
+    visible = attributes->GetBlockVisibility(node);
+  }
+  if (auto* tree = vtkDataObjectTree::SafeDownCast(node))
+  {
+    vtkSmartPointer<vtkDataObjectTreeIterator> child;
+    child.TakeReference(tree->NewTreeIterator());
+    child->TraverseSubTreeOff();
+    child->VisitOnlyLeavesOff();
+    child->SkipEmptyNodesOff();
+    for (child->InitTraversal(); !child->IsDoneWithTraversal(); child->GoToNextItem())
+    {
+      this->AddBlocks(child->GetCurrentDataObject(), visible, flatIndex, attributes, actor);
+    }
+    return;
+  }
+  auto* data = vtkPolyData::SafeDownCast(node);
+  if (data && visible)
+  {
+    vtkShadowCaster block = actor;
+    block.Data = data;
+    block.FlatIndex = index;
+    this->Casters.push_back(block);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -65,28 +104,12 @@ void vtkShadowCasterRegistry::Update(vtkRenderer* renderer)
       this->Casters.push_back(caster);
       continue;
     }
-    auto* composite = vtkCompositeDataSet::SafeDownCast(input);
     auto* compositeMapper = vtkCompositePolyDataMapper2::SafeDownCast(mapper);
-    if (!composite || !compositeMapper)
+    if (vtkCompositeDataSet::SafeDownCast(input) && compositeMapper)
     {
-      continue;
-    }
-    vtkCompositeDataDisplayAttributes* attributes =
-      compositeMapper->GetCompositeDataDisplayAttributes();
-    vtkSmartPointer<vtkCompositeDataIterator> block;
-    block.TakeReference(composite->NewIterator());
-    for (block->InitTraversal(); !block->IsDoneWithTraversal(); block->GoToNextItem())
-    {
-      auto* data = vtkPolyData::SafeDownCast(block->GetCurrentDataObject());
-      if (!data ||
-        (attributes && attributes->HasBlockVisibility(data) &&
-          !attributes->GetBlockVisibility(data)))
-      {
-        continue;
-      }
-      caster.Data = data;
-      caster.FlatIndex = block->GetCurrentFlatIndex();
-      this->Casters.push_back(caster);
+      unsigned int flatIndex = 0;
+      this->AddBlocks(
+        input, true, flatIndex, compositeMapper->GetCompositeDataDisplayAttributes(), caster);
     }
   }
 }

@@ -7,7 +7,8 @@
  * Part of the framework, refreshed at the start of every frame
  * (vtkSoftShadowPass::Render()). GetProps() are what light-space draws
  * render through VTK's mappers; GetCasters() give a technique each
- * polydata (each visible block of a vtkCompositePolyDataMapper2) to derive
+ * polydata (each visible block of a vtkCompositePolyDataMapper2, block
+ * visibility inherited as the mapper does) to derive
  * its own data from (a topology aware mesh, an edge table, a silhouette
  * tree), cached with vtkShadowCasterCache until the data changes, and
  * lights expressed in the caster's model space for per-mesh filters such as
@@ -31,6 +32,8 @@
 #include <vector>     // for std::vector
 
 class vtkActor;
+class vtkCompositeDataDisplayAttributes;
+class vtkDataObject;
 class vtkPolyData;
 class vtkProp;
 class vtkRenderer;
@@ -64,6 +67,9 @@ public:
   const std::vector<vtkShadowCaster>& GetCasters() const { return this->Casters; }
 
 private:
+  void AddBlocks(vtkDataObject* node, bool visible, unsigned int& flatIndex,
+    vtkCompositeDataDisplayAttributes* attributes, const vtkShadowCaster& actor);
+
   std::vector<vtkProp*> Props;
   std::vector<vtkShadowCaster> Casters;
 };

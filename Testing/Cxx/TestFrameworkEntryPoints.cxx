@@ -5,6 +5,8 @@
 // - those per-light textures bound in the receivers and read back there;
 // - a compute pass (image store, SSBO atomics) writing a visibility texture
 //   the receivers read;
+// - the casters: each actor's polydata and a composite mapper's visible
+//   blocks;
 // - a per-caster cache that rebuilds when a polydata is modified, and not
 //   otherwise, and forgets casters that left the scene;
 // - lights in a transformed actor's model space (silhouettes match those of
@@ -15,11 +17,14 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCommand.h"
+#include "vtkCompositeDataDisplayAttributes.h"
+#include "vtkCompositePolyDataMapper2.h"
 #include "vtkCubeSource.h"
 #include "vtkDoubleArray.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkLightSilhouetteFilter.h"
+#include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -159,6 +164,7 @@ public:
   std::vector<std::vector<float>> LightTexels; ///< per light, the MIN-blended target
   unsigned int Invocations = 0;
   std::map<vtkProp*, vtkIdType> Silhouettes; ///< per caster, with the model-space light
+  std::vector<std::pair<vtkProp*, unsigned int>> CastersSeen; ///< prop and block of each caster
   struct Derived
   {
     vtkSmartPointer<vtkLightSilhouetteFilter> Filter;
@@ -180,8 +186,10 @@ protected:
     // Per caster: silhouettes of light 0 in the caster's model space, from
     // a filter built once per polydata.
     this->Silhouettes.clear();
+    this->CastersSeen.clear();
     for (const vtkShadowCaster& caster : this->Casters->GetCasters())
     {
+      this->CastersSeen.emplace_back(caster.Prop, caster.FlatIndex);
       Derived& derived = this->Cache.Get(caster,
         [](vtkPolyData* data, Derived& value)
         {
@@ -432,6 +440,31 @@ int TestFrameworkEntryPoints(int, char*[])
     renderer->AddActor(actor);
     actors.push_back(actor);
   }
+  // Blocks of a composite mapper: pebbles at flat indices 1, 3 and 4, the
+  // one at 3 inside a block (2) that is hidden, which hides it too.
+  auto pebble = [](double x)
+  {
+    vtkNew<vtkSphereSource> source;
+    source->SetCenter(x, 0.15, 1.5);
+    source->SetRadius(0.12);
+    source->Update();
+    return vtkSmartPointer<vtkPolyData>(source->GetOutput());
+  };
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  vtkNew<vtkMultiBlockDataSet> hidden;
+  hidden->SetBlock(0, pebble(-1.1));
+  blocks->SetBlock(0, pebble(-1.5));
+  blocks->SetBlock(1, hidden);
+  blocks->SetBlock(2, pebble(-0.7));
+  vtkNew<vtkCompositePolyDataMapper2> compositeMapper;
+  compositeMapper->SetInputDataObject(blocks);
+  vtkNew<vtkCompositeDataDisplayAttributes> attributes;
+  compositeMapper->SetCompositeDataDisplayAttributes(attributes);
+  compositeMapper->SetBlockVisibility(2, false);
+  vtkNew<vtkActor> pebbles;
+  pebbles->SetMapper(compositeMapper);
+  renderer->AddActor(pebbles);
+
   // The box: rotated, scaled unevenly and moved.
   vtkActor* boxActor = actors[2];
   boxActor->SetOrientation(20.0, 35.0, 10.0);
@@ -513,15 +546,29 @@ int TestFrameworkEntryPoints(int, char*[])
         std::to_string(strays * 100.0) + "% other pixels)");
   }
 
+  // The casters: three actors' polydata, and the composite's visible blocks
+  // (flat indices 1 and 4).
+  std::vector<unsigned int> pebbleBlocks;
+  for (const auto& seen : pass->CastersSeen)
+  {
+    if (seen.first == pebbles.Get())
+    {
+      pebbleBlocks.push_back(seen.second);
+    }
+  }
+  Check(pass->CastersSeen.size() == 5 && pebbleBlocks == std::vector<unsigned int>{ 1, 4 },
+    "five casters: three actors and the composite's two visible blocks (" +
+      std::to_string(pass->CastersSeen.size()) + ")");
+
   // The per-caster cache: built once per polydata...
-  Check(pass->Cache.GetNumberOfBuilds() == 3 && pass->Cache.GetNumberOfEntries() == 3,
-    "three casters, three builds (" + std::to_string(pass->Cache.GetNumberOfBuilds()) + ")");
+  Check(pass->Cache.GetNumberOfBuilds() == 5 && pass->Cache.GetNumberOfEntries() == 5,
+    "five casters, five builds (" + std::to_string(pass->Cache.GetNumberOfBuilds()) + ")");
   // ...rebuilt when one is modified...
   ball->SetThetaResolution(24);
   window->Render();
-  Check(pass->Cache.GetNumberOfBuilds() == 4, "a modified polydata is rebuilt, once");
+  Check(pass->Cache.GetNumberOfBuilds() == 6, "a modified polydata is rebuilt, once");
   window->Render();
-  Check(pass->Cache.GetNumberOfBuilds() == 4, "nothing modified, nothing rebuilt");
+  Check(pass->Cache.GetNumberOfBuilds() == 6, "nothing modified, nothing rebuilt");
 
   // Model-space light: the transformed box's silhouettes are those of the
   // box transformed into the world, under the world light.
@@ -544,7 +591,7 @@ int TestFrameworkEntryPoints(int, char*[])
   // ...and forgets a caster that left the scene.
   renderer->RemoveActor(boxActor);
   window->Render();
-  Check(pass->Cache.GetNumberOfEntries() == 2, "a removed caster leaves the cache");
+  Check(pass->Cache.GetNumberOfEntries() == 4, "a removed caster leaves the cache");
   renderer->AddActor(boxActor);
 
   // A compute pass writes the visibility the receivers read.
