@@ -41,6 +41,7 @@ class vtkReferenceShadowPass::vtkInternals
 public:
   std::unique_ptr<vtkOpenGLQuadHelper> Accumulate, AccumulateCube;
   vtkShadowMapManager::Light Sample; // owns the scratch maps of one light sample
+  int NormalsUnit = -1;              // the camera pass's normals, while accumulating
 };
 
 vtkStandardNewMacro(vtkReferenceShadowPass);
@@ -79,10 +80,14 @@ bool vtkReferenceShadowPass::RenderScreenSpace(const vtkRenderState* s)
     return false;
   }
 
-  if (!this->RenderCameraDepth(s))
+  // The camera pass writes each pixel's face normal for the accumulation.
+  vtkTextureObject* normals = this->Screen->GetTexture("reference.normals", 4);
+  if (!this->RenderCameraDepth(s, { normals }))
   {
     return false;
   }
+  normals->Activate();
+  internals.NormalsUnit = normals->GetTextureUnit();
   auto& lights = this->Maps->GetLights();
   for (size_t slot = 0; slot < lights.size(); ++slot)
   {
@@ -114,11 +119,13 @@ bool vtkReferenceShadowPass::RenderScreenSpace(const vtkRenderState* s)
       if (!this->AccumulateSample(s, static_cast<int>(slot), eyeWC, directionWC, weight))
       {
         this->Screen->EndVisibility();
+        normals->Deactivate();
         return false;
       }
     }
     this->Screen->EndVisibility();
   }
+  normals->Deactivate();
   return true;
 }
 
@@ -172,6 +179,7 @@ bool vtkReferenceShadowPass::AccumulateSample(const vtkRenderState* s, int slot,
         vtkShadowMapManager::SetLookupUniforms(
           program, "reference", this->MapSize, this->NormalBias, this->DistanceBias);
         program->SetUniformf("referenceWeight", weight);
+        program->SetUniformi("referenceNormals", internals.NormalsUnit);
       });
   }
   else
@@ -184,10 +192,18 @@ bool vtkReferenceShadowPass::AccumulateSample(const vtkRenderState* s, int slot,
         vtkShadowMapManager::SetLookupUniforms(
           program, "reference", this->MapSize, this->NormalBias, this->DistanceBias);
         program->SetUniformf("referenceWeight", weight);
+        program->SetUniformi("referenceNormals", internals.NormalsUnit);
       });
   }
   map->Deactivate();
   return true;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkReferenceShadowPass::GetCameraPassImplementation()
+{
+  // Points and lines (no face) take the receivers' own hard shadow.
+  return "  gl_FragData[0] = vtkShadowFaceDefined ? vec4(vtkShadowNormalWC, 1.0) : vec4(0.0);\n";
 }
 
 //------------------------------------------------------------------------------

@@ -58,6 +58,7 @@ protected:
   bool RenderScreenSpace(const vtkRenderState* s) override;
   bool UsesScreenSpace() const override { return true; }
   bool SupportsPointLights() const override { return true; }
+  std::string GetCameraPassImplementation() override;
 
   int NumberOfSamples = 256;
   unsigned int Seed = 1;

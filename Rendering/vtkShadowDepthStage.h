@@ -1,7 +1,15 @@
 /**
  * @class   vtkShadowDepthStage
- * @brief   Depth only: the mappers skip all shading. Light depth maps, the
- *          camera depth and the depth pre-pass draw through it.
+ * @brief   Depth only: the mappers skip all shading. Light depth maps and the
+ *          depth pre-pass draw through it.
+ *
+ * Points drawn as spheres and lines as tubes are sprites whose depth VTK
+ * bends into a sphere or tube a few pixels wide, pixels of whichever view
+ * draws them: from the light they are another size than from the camera,
+ * and they would shadow themselves. In light space (LightSpace, the default)
+ * they write their primitive's own depth: they shadow others from their
+ * points and lines, receive others' shadows, and their own terminator comes
+ * from their shading, as in plain VTK.
  */
 
 #ifndef vtkShadowDepthStage_h
@@ -12,7 +20,14 @@
 class VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowDepthStage : public vtkShadowStage
 {
 public:
+  /// Light-space draws flatten sprites' depth (see above). Default true.
+  void SetLightSpace(bool lightSpace) { this->LightSpace = lightSpace; }
+
   void PreReplace(vtkShadowShaderSources& sources) override;
+  void PostReplace(vtkShadowShaderSources& sources) override;
+
+private:
+  bool LightSpace = true;
 };
 
 #endif

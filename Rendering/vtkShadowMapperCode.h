@@ -36,6 +36,15 @@ inline bool IsLit(const std::string& fragmentShader)
   return fragmentShader.find("vertexVCVSOutput") != std::string::npos;
 }
 
+/// Whether the mapper moves the fragment's depth but not its position:
+/// points drawn as spheres (gl_PointCoord) and lines as tubes (tubeBasis1).
+inline bool MovesDepthOnly(const std::string& fragmentShader)
+{
+  return fragmentShader.find("gl_FragDepth") != std::string::npos &&
+    (fragmentShader.find("gl_PointCoord") != std::string::npos ||
+      fragmentShader.find("tubeBasis1") != std::string::npos);
+}
+
 /**
  * Scale light `n`'s contribution in `fragmentShader` by the GLSL float
  * `factor`: Phong diffuse and specular, PBR radiance (directional and

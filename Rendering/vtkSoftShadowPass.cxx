@@ -62,11 +62,20 @@ void SetMatrix(vtkShaderProgram* program, const std::string& name, const glm::dm
 }
 
 // Each lit fragment's surface (vtkShadowSurfaceFS.glsl), as the camera pass
-// and the receivers' visibility expressions see it.
-const char* const SurfaceCode =
-  "  vec4 vtkShadowPositionWC;\n"
-  "  vec3 vtkShadowNormalWC;\n"
-  "  vtkShadowSurface(vertexVCVSOutput.xyz, vtkShadowPositionWC, vtkShadowNormalWC);\n";
+// and the receivers' visibility expressions see it: from the fragment's
+// view-space position, which sphere and stick imposters compute in the
+// fragment shader (vertexVC), and its shading normal.
+std::string SurfaceCode(const std::string& fragmentShader)
+{
+  const bool computed = fragmentShader.find("vec4 vertexVC") != std::string::npos;
+  const bool shaded = fragmentShader.find("normalVCVSOutput") != std::string::npos;
+  return std::string("  vec4 vtkShadowPositionWC;\n"
+                     "  vec3 vtkShadowNormalWC;\n"
+                     "  bool vtkShadowFaceDefined = vtkShadowSurface(") +
+    (computed ? "vertexVC.xyz" : "vertexVCVSOutput.xyz") + ", " +
+    (shaded ? "normalVCVSOutput" : "vec3(0.0, 0.0, 1.0)") +
+    ", vtkShadowPositionWC, vtkShadowNormalWC);\n";
+}
 
 // The camera's view to world matrix, for the surface code.
 void SetViewToWorld(vtkShaderProgram* program, vtkRenderer* renderer)
@@ -114,7 +123,7 @@ public:
     if (this->Targets > 0 && sources.IsLit())
     {
       dec = std::string(vtkShadowSurfaceFS) + "\n" + this->Pass->GetCameraPassDeclarations();
-      impl = std::string(SurfaceCode) + this->Pass->GetCameraPassImplementation();
+      impl = SurfaceCode(sources.Fragment) + this->Pass->GetCameraPassImplementation();
     }
     else
     {
@@ -207,7 +216,7 @@ void vtkSoftShadowPass::vtkReceiverStage::PostReplace(vtkShadowShaderSources& so
     }
     dec << pass->GetVisibilityDeclarations() << "\n";
 
-    impl << SurfaceCode;
+    impl << SurfaceCode(fragmentShader);
     if (pass->UsesScreenSpace())
     {
       impl << "  vtkShadowScreenSetup(vtkShadowPositionWC);\n";
@@ -320,12 +329,14 @@ vtkSoftShadowPass::vtkSoftShadowPass()
   , Screen(new vtkShadowScreenBuffers)
   , Drawer(new vtkShadowDrawer(*Casters))
   , DepthStage(new vtkShadowDepthStage)
+  , PrePassStage(new vtkShadowDepthStage)
   , DistanceStage(new vtkShadowDistanceStage)
   , CameraStage(new vtkCameraStage(this))
   , ReceiverStage(new vtkReceiverStage(this))
 {
   vtkNew<vtkRenderStepsPass> steps;
   this->SetDelegatePass(steps);
+  this->PrePassStage->SetLightSpace(false);
 }
 
 //------------------------------------------------------------------------------
@@ -612,7 +623,7 @@ void vtkSoftShadowPass::RenderDepthPrePass(const vtkRenderState* s)
   state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   state->vtkglDepthMask(GL_TRUE);
   vtkShadowShaderHooks* hooks = this->Drawer->GetHooks();
-  hooks->SetStage(this->DepthStage.get());
+  hooks->SetStage(this->PrePassStage.get());
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
     s->GetPropArray()[i]->RenderOpaqueGeometry(s->GetRenderer());

@@ -339,7 +339,7 @@ protected:
   std::unique_ptr<vtkShadowMapManager> Maps;
   std::unique_ptr<vtkShadowScreenBuffers> Screen;
   std::unique_ptr<vtkShadowDrawer> Drawer;
-  std::unique_ptr<vtkShadowDepthStage> DepthStage;
+  std::unique_ptr<vtkShadowDepthStage> DepthStage; ///< light space
 
 private:
   vtkSoftShadowPass(const vtkSoftShadowPass&) = delete;
@@ -348,6 +348,7 @@ private:
   class vtkCameraStage;
   class vtkReceiverStage;
   class vtkDepthPrePassStep;
+  std::unique_ptr<vtkShadowDepthStage> PrePassStage; ///< the camera's depth pre-pass
   std::unique_ptr<vtkShadowDistanceStage> DistanceStage;
   std::unique_ptr<vtkCameraStage> CameraStage;
   std::unique_ptr<vtkReceiverStage> ReceiverStage;

@@ -3,6 +3,7 @@
 // a 2D depth map, or, when ACCUMULATE_CUBE is defined, a point light's cube
 // map of squared distances.
 // Uses: vtkShadowScreenCommonFS.glsl, vtkShadowNormalOffsetFS.glsl, vtkShadowCubeLookupFS.glsl.
+uniform sampler2D referenceNormals; // the camera pass's face normals
 uniform float referenceNormalBias;
 uniform float referenceWeight;
 #ifdef ACCUMULATE_CUBE
@@ -27,7 +28,15 @@ void main()
     discard;
   }
   vec3 position = vtkShadowScreenPositionWC(texCoord, depth);
-  vec3 normal = vtkShadowScreenNormalWC(depth, position);
+  // The face normal the camera pass wrote, right at silhouettes too. Where it
+  // wrote none (points, lines, unlit fragments) the texel stays invalid: the
+  // receivers keep their own hard shadow there.
+  vec4 face = texelFetch(referenceNormals, vtkShadowScreenPixel(), 0);
+  if (face.w < 0.5)
+  {
+    discard;
+  }
+  vec3 normal = face.xyz;
 #ifdef ACCUMULATE_CUBE
   float lit = vtkShadowCubeLookup(referenceCube, referenceCubeCenter, vec4(position, 1.0), normal, referenceCubeTexel,
     referenceNormalBias, referenceDistanceBias, referenceCubeRange, 0);

@@ -1,14 +1,22 @@
 // The surface a mapper's fragment lies on, for the camera pass and the
 // receivers (vtkSoftShadowPass): its world position and geometric normal,
-// from the mapper's view-space position (vertexVCVSOutput).
+// from the mapper's view-space position (vertexVC: imposters ray-cast it in
+// the fragment shader).
 uniform mat4 vtkShadowViewToWorld; // the camera's view to world matrix
-
-// The normal from derivatives of the triangle's own interpolants: the
-// face's true orientation, which the normal offset needs (interpolated
-// normals lie on coarse meshes), and right at silhouettes too, unlike a
-// depth buffer's.
-void vtkShadowSurface(vec3 positionVC, out vec4 positionWC, out vec3 normalWC)
+// The normal from derivatives of the fragment's own position: the face's
+// true orientation, which the normal offset needs (interpolated normals lie
+// on coarse meshes), and right at silhouettes too, unlike a depth buffer's.
+// Where it is undefined, the mapper's shading normal `normalVC`: points and
+// lines (their position does not vary across them), and imposters' edges
+// (a neighbour in the pixel quad was discarded), points drawn as spheres and
+// lines as tubes (which move only their depth, see vtkShadowDepthStage).
+// Returns whether the face was defined.
+bool vtkShadowSurface(vec3 positionVC, vec3 normalVC, out vec4 positionWC, out vec3 normalWC)
 {
   positionWC = vtkShadowViewToWorld * vec4(positionVC, 1.0);
-  normalWC = normalize(mat3(vtkShadowViewToWorld) * cross(dFdx(positionVC), dFdy(positionVC)));
+  vec3 face = cross(dFdx(positionVC), dFdy(positionVC));
+  float size = dot(face, face);
+  bool defined = size > 0.0 && size < 1.0e30; // false for NaN too
+  normalWC = normalize(mat3(vtkShadowViewToWorld) * (defined ? face : normalVC));
+  return defined;
 }

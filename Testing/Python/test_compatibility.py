@@ -1,0 +1,328 @@
+"""Every kind of actor VTK draws looks as VTK draws it under every technique,
+plus its shadow: the compatibility matrix.
+
+Each case puts one actor (a mapper and render mode a VTK user draws with)
+above a floor under a spot light, and is drawn by plain VTK and by each
+technique. Then, against plain VTK's picture:
+- drawn and lit: the actor's pixels that plain VTK lights keep their
+  brightness (nothing lies between them and the light; only the actor's own
+  terminator may move a little);
+- casting: the floor darkens where the actor's shadow falls;
+- no stray darkness: most of the floor stays as plain VTK draws it.
+Every failure is listed before the test fails.
+"""
+import sys
+
+import numpy as np
+import vtkmodules.vtkInteractionStyle  # noqa: F401
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand, vtkOutputWindow, vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkMolecule, vtkMultiBlockDataSet, vtkPolyData
+from vtkmodules.vtkDomainsChemistryOpenGL2 import vtkOpenGLMoleculeMapper
+from vtkmodules.vtkFiltersCore import vtkElevationFilter, vtkPolyDataNormals
+from vtkmodules.vtkFiltersSources import (vtkCubeSource, vtkLineSource, vtkPlaneSource,
+                                          vtkSphereSource, vtkTexturedSphereSource)
+from vtkmodules.vtkImagingSources import vtkImageGridSource
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkGlyph3DMapper, vtkLight,
+                                         vtkPolyDataMapper, vtkRenderWindow, vtkRenderer,
+                                         vtkTexture, vtkWindowToImageFilter)
+from vtkmodules.vtkRenderingOpenGL2 import (vtkCompositePolyDataMapper2, vtkOpenGLSphereMapper)
+from vtksoftshadows import (vtkContactHardeningShadowPass, vtkHardShadowPass,
+                            vtkOmnidirectionalShadowPass, vtkReferenceShadowPass,
+                            vtkSoftShadowPass)
+
+SIZE = (160, 120)
+
+
+def mapper_for(source):
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputConnection(source.GetOutputPort())
+    return mapper
+
+
+def actor_for(mapper, color=(0.9, 0.5, 0.3)):
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    actor.GetProperty().SetColor(*color)
+    return actor
+
+
+def ball(resolution=24):
+    sphere = vtkSphereSource()
+    sphere.SetCenter(0.0, 0.9, 0.0)
+    sphere.SetRadius(0.45)
+    sphere.SetThetaResolution(resolution)
+    sphere.SetPhiResolution(resolution)
+    return sphere
+
+
+def grid_plate():
+    """A plate facing the light, with point normals."""
+    plate = vtkPlaneSource()
+    plate.SetOrigin(-0.6, 0.8, 0.6)
+    plate.SetPoint1(0.6, 0.8, 0.6)
+    plate.SetPoint2(-0.6, 0.8, -0.6)
+    plate.SetResolution(8, 8)
+    normals = vtkPolyDataNormals()
+    normals.SetInputConnection(plate.GetOutputPort())
+    return normals
+
+
+def three_points():
+    points = vtkPoints()
+    for x in (-0.5, 0.0, 0.5):
+        points.InsertNextPoint(x, 0.9, 0.0)
+    vertices = vtkCellArray()
+    for i in range(3):
+        vertices.InsertNextCell(1)
+        vertices.InsertCellPoint(i)
+    data = vtkPolyData()
+    data.SetPoints(points)
+    data.SetVerts(vertices)
+    return data
+
+
+def case_surface():
+    return [actor_for(mapper_for(ball()))]
+
+
+def case_representation(setup):
+    actor = actor_for(mapper_for(grid_plate()))
+    setup(actor.GetProperty())
+    return [actor]
+
+
+def case_edges():
+    actor = actor_for(mapper_for(ball()))
+    actor.GetProperty().EdgeVisibilityOn()
+    return [actor]
+
+
+def case_polylines():
+    line = vtkLineSource()
+    line.SetPoint1(-0.7, 0.9, 0.0)
+    line.SetPoint2(0.7, 0.9, 0.0)
+    actor = actor_for(mapper_for(line))
+    actor.GetProperty().SetLineWidth(3)
+    return [actor]
+
+
+def case_sphere_imposters():
+    mapper = vtkOpenGLSphereMapper()
+    mapper.SetInputData(three_points())
+    mapper.SetRadius(0.22)
+    return [actor_for(mapper)]
+
+
+def case_molecule():
+    molecule = vtkMolecule()
+    atoms = [molecule.AppendAtom(z, x, 0.9, 0.0) for z, x in ((8, -0.6), (6, 0.0), (8, 0.6))]
+    molecule.AppendBond(atoms[0], atoms[1], 2)
+    molecule.AppendBond(atoms[1], atoms[2], 2)
+    mapper = vtkOpenGLMoleculeMapper()
+    mapper.SetInputData(molecule)
+    mapper.UseBallAndStickSettings()
+    return [actor_for(mapper)]
+
+
+def case_composite():
+    blocks = vtkMultiBlockDataSet()
+    for i, x in enumerate((-0.45, 0.45)):
+        sphere = vtkSphereSource()
+        sphere.SetCenter(x, 0.9, 0.0)
+        sphere.SetRadius(0.3)
+        sphere.Update()
+        blocks.SetBlock(i, sphere.GetOutput())
+    mapper = vtkCompositePolyDataMapper2()
+    mapper.SetInputDataObject(blocks)
+    return [actor_for(mapper)]
+
+
+def case_glyphs():
+    cube = vtkCubeSource()
+    cube.SetXLength(0.3)
+    cube.SetYLength(0.3)
+    cube.SetZLength(0.3)
+    mapper = vtkGlyph3DMapper()
+    mapper.SetInputData(three_points())
+    mapper.SetSourceConnection(cube.GetOutputPort())
+    mapper.ScalingOff()
+    return [actor_for(mapper)]
+
+
+def case_textured():
+    sphere = vtkTexturedSphereSource()
+    sphere.SetRadius(0.45)
+    sphere.SetThetaResolution(24)
+    sphere.SetPhiResolution(24)
+    grid = vtkImageGridSource()
+    grid.SetDataExtent(0, 63, 0, 63, 0, 0)
+    grid.SetGridSpacing(8, 8, 0)
+    grid.SetLineValue(80)
+    grid.SetFillValue(255)
+    grid.SetDataScalarTypeToUnsignedChar()
+    texture = vtkTexture()
+    texture.SetInputConnection(grid.GetOutputPort())
+    actor = actor_for(mapper_for(sphere), (1.0, 1.0, 1.0))
+    actor.SetTexture(texture)
+    actor.SetPosition(0.0, 0.9, 0.0)
+    return [actor]
+
+
+def case_scalars():
+    sphere = ball()
+    elevation = vtkElevationFilter()
+    elevation.SetInputConnection(sphere.GetOutputPort())
+    elevation.SetLowPoint(0, 0.45, 0)
+    elevation.SetHighPoint(0, 1.35, 0)
+    mapper = mapper_for(elevation)
+    mapper.SetScalarRange(0.0, 1.0)
+    return [actor_for(mapper)]
+
+
+def case_pbr():
+    actor = actor_for(mapper_for(ball(32)))
+    actor.GetProperty().SetInterpolationToPBR()
+    actor.GetProperty().SetMetallic(0.2)
+    actor.GetProperty().SetRoughness(0.5)
+    return [actor]
+
+
+CASES = [
+    ("surface", case_surface),
+    ("wireframe", lambda: case_representation(lambda p: p.SetRepresentationToWireframe())),
+    ("points", lambda: case_representation(
+        lambda p: (p.SetRepresentationToPoints(), p.SetPointSize(4)))),
+    ("edges", case_edges),
+    ("polylines", case_polylines),
+    ("lines as tubes", lambda: case_representation(
+        lambda p: (p.SetRepresentationToWireframe(), p.RenderLinesAsTubesOn(),
+                   p.SetLineWidth(4)))),
+    ("points as spheres", lambda: case_representation(
+        lambda p: (p.SetRepresentationToPoints(), p.RenderPointsAsSpheresOn(),
+                   p.SetPointSize(6)))),
+    ("sphere imposters", case_sphere_imposters),
+    ("molecule (sphere and stick imposters)", case_molecule),
+    ("composite", case_composite),
+    ("glyphs", case_glyphs),
+    ("textured", case_textured),
+    ("scalar colours", case_scalars),
+    ("PBR", case_pbr),
+]
+
+
+def technique(name):
+    if name == "hard":
+        return vtkHardShadowPass()
+    if name == "contact":
+        return vtkContactHardeningShadowPass()
+    if name == "omni":
+        return vtkOmnidirectionalShadowPass()
+    if name == "reference":
+        reference = vtkReferenceShadowPass()
+        reference.SetNumberOfSamples(16)
+        return reference
+    raise ValueError(name)
+
+
+TECHNIQUES = ["hard", "contact", "omni", "reference"]
+
+
+def render(props, name=None):
+    """RGB image (rows bottom first) of the floor, `props` and the light."""
+    renderer = vtkRenderer()
+    renderer.AutomaticLightCreationOff()
+    renderer.SetBackground(0.0, 0.0, 0.4)
+    floor = vtkPlaneSource()
+    floor.SetOrigin(-3, 0, 3)
+    floor.SetPoint1(3, 0, 3)
+    floor.SetPoint2(-3, 0, -3)
+    renderer.AddActor(actor_for(mapper_for(floor), (0.8, 0.8, 0.8)))
+    for prop in props:
+        renderer.AddActor(prop)
+    light = vtkLight()
+    light.SetLightTypeToSceneLight()
+    light.SetPositional(True)
+    light.SetPosition(0.6, 5.0, 1.0)
+    light.SetFocalPoint(0.0, 0.0, 0.0)
+    light.SetConeAngle(40.0)
+    vtkSoftShadowPass.SetRadius(0.1, light)
+    renderer.AddLight(light)
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(0.0, 3.2, 3.6)
+    camera.SetFocalPoint(0.0, 0.5, 0.0)
+    renderer.ResetCameraClippingRange()
+    if name:
+        shadows = technique(name)
+        shadows.SetMapSize(512)
+        renderer.SetPass(shadows)
+    window = vtkRenderWindow()
+    window.SetSize(*SIZE)
+    window.SetMultiSamples(0)
+    window.AddRenderer(renderer)
+    window.Render()
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.Update()
+    image = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())
+    result = image.reshape(SIZE[1], SIZE[0], -1)[:, :, :3].astype(float)
+    window.Finalize()
+    return result
+
+
+def brightness(image):
+    return image.mean(axis=2)
+
+
+# Any error VTK reports (a shader that does not compile, say) fails the test:
+# a technique must not quietly draw something else.
+errors = []
+
+
+@calldata_type(VTK_STRING)
+def on_error(caller, event, text):
+    errors.append(text)
+
+
+vtkOutputWindow.GetInstance().AddObserver(vtkCommand.ErrorEvent, on_error)
+
+failures = []
+floor_only = brightness(render([]))
+for case, build in CASES:
+    plain = brightness(render(build()))
+    actor = np.abs(plain - floor_only) > 3.0
+    floor = ~actor & (floor_only > 10.0)
+    lit_actor = actor & (plain > 40.0)
+    for name in TECHNIQUES:
+        shaded = brightness(render(build(), name))
+        label = "%s, %s" % (case, name)
+        if lit_actor.sum() < 20:
+            failures.append("%s: plain VTK lights too little of the actor to judge" % label)
+            continue
+        # Drawn and lit as plain VTK draws it.
+        difference = np.abs(shaded[lit_actor] - plain[lit_actor])
+        darkened = np.mean(shaded[lit_actor] < 0.75 * plain[lit_actor])
+        if np.median(difference) > 4.0 or darkened > 0.1:
+            failures.append("%s: actor not lit as plain VTK (median difference %.1f, "
+                            "%.0f%% of its lit pixels darker by a quarter)"
+                            % (label, np.median(difference), 100 * darkened))
+        # Casts a shadow on the floor, and leaves the rest of it alone.
+        shadow = floor & (shaded < 0.75 * floor_only)
+        if shadow.sum() < 15:
+            failures.append("%s: no shadow on the floor (%d pixels)" % (label, shadow.sum()))
+        if shadow.sum() > 0.3 * floor.sum():
+            failures.append("%s: %.0f%% of the floor darkened" % (label, 100.0 * shadow.mean()))
+        if errors:
+            failures.append("%s: VTK reported %d error(s), the first: %s"
+                            % (label, len(errors), errors[0].strip()[:300]))
+            errors.clear()
+        print("%-40s %-9s actor median diff %4.1f, %3.0f%% darkened; floor shadow %4d px"
+              % (case, name, np.median(difference), 100 * darkened, shadow.sum()))
+
+if failures:
+    print("\n".join("FAIL: " + f for f in failures))
+    sys.exit(1)
+print("ok: %d cases x %d techniques look as plain VTK draws them, plus their shadows"
+      % (len(CASES), len(TECHNIQUES)))
