@@ -1,6 +1,7 @@
 #include "vtkSoftShadowPass.h"
 
 #include "vtkCamera.h"
+#include "vtkDualDepthPeelingPass.h"
 #include "vtkInformation.h"
 #include "vtkInformationDoubleKey.h"
 #include "vtkLight.h"
@@ -10,6 +11,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLState.h"
+#include "vtkOrderIndependentTranslucentPass.h"
 #include "vtkProp.h"
 #include "vtkRenderPassCollection.h"
 #include "vtkRenderState.h"
@@ -28,6 +30,8 @@
 #include "vtkShadowShaderHooks.h"
 #include "vtkShadowStage.h"
 #include "vtkTextureObject.h"
+#include "vtkTranslucentPass.h"
+#include "vtkVolumetricPass.h"
 #include "vtk_glew.h"
 
 #include "vtkShadowCubeLookupFS.h"
@@ -334,8 +338,13 @@ vtkSoftShadowPass::vtkSoftShadowPass()
   , CameraStage(new vtkCameraStage(this))
   , ReceiverStage(new vtkReceiverStage(this))
 {
-  vtkNew<vtkRenderStepsPass> steps;
-  this->SetDelegatePass(steps);
+  // The default delegate draws translucency as VTK's renderer does without a
+  // pass: order independent, or depth-peeled when the renderer asks.
+  this->DefaultSteps = vtkSmartPointer<vtkRenderStepsPass>::New();
+  this->OrderIndependent->SetTranslucentPass(this->Translucent);
+  this->DepthPeeling->SetTranslucentPass(this->Translucent);
+  this->DefaultSteps->SetTranslucentPass(this->OrderIndependent);
+  this->SetDelegatePass(this->DefaultSteps);
   this->PrePassStage->SetLightSpace(false);
 }
 
@@ -474,6 +483,11 @@ void vtkSoftShadowPass::RenderReceivers(const vtkRenderState* s, bool screenSpac
   vtkOpenGLState::ScopedglEnableDisable seamless(state, GL_TEXTURE_CUBE_MAP_SEAMLESS);
   state->vtkglEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
 
+  if (this->DelegatePass == this->DefaultSteps)
+  {
+    this->ChooseTranslucency(s->GetRenderer());
+  }
+
   // Gerasimov's depth-only pre-pass (section 12.3.4): opaque depth first, so
   // the shading pass runs only on visible fragments. It is a step slotted
   // before the default delegate's opaque pass, after its camera pass cleared.
@@ -516,6 +530,27 @@ void vtkSoftShadowPass::RenderReceivers(const vtkRenderState* s, bool screenSpac
   {
     (light.Point ? light.CubeMap : light.DepthMap)->Deactivate();
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkSoftShadowPass::ChooseTranslucency(vtkRenderer* renderer)
+{
+  // As vtkOpenGLRenderer::DeviceRenderTranslucentPolygonalGeometry() does.
+  vtkRenderStepsPass* steps = this->DefaultSteps;
+  if (!renderer->GetUseDepthPeeling())
+  {
+    steps->SetTranslucentPass(this->OrderIndependent);
+    steps->SetVolumetricPass(this->Volumetric);
+    this->DepthPeeling->SetVolumetricPass(nullptr);
+    return;
+  }
+  this->DepthPeeling->SetMaximumNumberOfPeels(renderer->GetMaximumNumberOfPeels());
+  this->DepthPeeling->SetOcclusionRatio(renderer->GetOcclusionRatio());
+  // Volumes peeled with the translucent geometry, or drawn after it.
+  const bool volumes = renderer->GetUseDepthPeelingForVolumes();
+  this->DepthPeeling->SetVolumetricPass(volumes ? this->Volumetric.Get() : nullptr);
+  steps->SetVolumetricPass(volumes ? nullptr : this->Volumetric.Get());
+  steps->SetTranslucentPass(this->DepthPeeling);
 }
 
 //------------------------------------------------------------------------------

@@ -42,7 +42,9 @@
 #ifndef vtkSoftShadowPass_h
 #define vtkSoftShadowPass_h
 
+#include "vtkNew.h" // for vtkNew
 #include "vtkOpenGLRenderPass.h"
+#include "vtkSmartPointer.h"               // for vtkSmartPointer
 #include "vtkSoftShadowsRenderingModule.h" // for export macro
 
 #include <array>  // for std::array
@@ -52,8 +54,13 @@
 
 class vtkInformationDoubleKey;
 class vtkLight;
+class vtkDualDepthPeelingPass;
 class vtkOpenGLRenderWindow;
+class vtkOrderIndependentTranslucentPass;
+class vtkRenderStepsPass;
 class vtkRenderer;
+class vtkTranslucentPass;
+class vtkVolumetricPass;
 class vtkShadowCasterRegistry;
 class vtkShadowDepthStage;
 class vtkShadowDistanceStage;
@@ -169,7 +176,11 @@ public:
   /**
    * The pass that draws the scene once the shadow term is in place.
    * Default: camera, lights, opaque, translucent, volumes and overlay
-   * (a vtkRenderStepsPass).
+   * (a vtkRenderStepsPass), translucency drawn as VTK's renderer draws it
+   * without a pass: order independent (vtkOrderIndependentTranslucentPass),
+   * or with dual depth peeling when the renderer's UseDepthPeeling is on
+   * (its MaximumNumberOfPeels, OcclusionRatio and UseDepthPeelingForVolumes
+   * honoured).
    */
   void SetDelegatePass(vtkRenderPass* pass);
   vtkGetObjectMacro(DelegatePass, vtkRenderPass);
@@ -358,6 +369,12 @@ private:
   bool PointLightReported = false;
   bool ComputeReported = false;
   void RenderDepthPrePass(const vtkRenderState* s);
+  void ChooseTranslucency(vtkRenderer* renderer);
+  vtkSmartPointer<vtkRenderStepsPass> DefaultSteps;
+  vtkNew<vtkTranslucentPass> Translucent;
+  vtkNew<vtkOrderIndependentTranslucentPass> OrderIndependent;
+  vtkNew<vtkDualDepthPeelingPass> DepthPeeling;
+  vtkNew<vtkVolumetricPass> Volumetric;
   void RenderReceivers(const vtkRenderState* s, bool screenSpace);
 };
 
