@@ -25,9 +25,15 @@ from vtkmodules.vtkFiltersCore import vtkElevationFilter, vtkPolyDataNormals
 from vtkmodules.vtkFiltersSources import (vtkCubeSource, vtkLineSource, vtkPlaneSource,
                                           vtkSphereSource, vtkTexturedSphereSource)
 from vtkmodules.vtkImagingSources import vtkImageGridSource
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkGlyph3DMapper, vtkLight,
+from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkColorTransferFunction, vtkGlyph3DMapper,
+                                         vtkImageSlice, vtkImageSliceMapper, vtkLight,
                                          vtkPolyDataMapper, vtkRenderWindow, vtkRenderer,
-                                         vtkTexture, vtkWindowToImageFilter)
+                                         vtkTextActor, vtkTexture, vtkVolume,
+                                         vtkWindowToImageFilter)
+from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
+from vtkmodules.vtkRenderingVolumeOpenGL2 import vtkOpenGLGPUVolumeRayCastMapper
+import vtkmodules.vtkRenderingFreeType  # noqa: F401
 from vtkmodules.vtkRenderingOpenGL2 import (vtkCompositePolyDataMapper2, vtkOpenGLSphereMapper)
 from vtksoftshadows import (vtkContactHardeningShadowPass, vtkHardShadowPass,
                             vtkOmnidirectionalShadowPass, vtkReferenceShadowPass,
@@ -204,6 +210,53 @@ def case_translucent():
     return actors
 
 
+def case_text():
+    text = vtkTextActor()
+    text.SetInput("Shadows")
+    text.GetTextProperty().SetFontSize(24)
+    text.GetTextProperty().SetColor(1.0, 1.0, 0.6)
+    text.SetPosition(20, 80)
+    return [text]
+
+
+def case_image_slice():
+    grid = vtkImageGridSource()
+    grid.SetDataExtent(0, 31, 0, 31, 0, 0)
+    grid.SetDataSpacing(0.03, 0.03, 1.0)
+    grid.SetDataOrigin(-0.47, 0.5, 0.0)
+    grid.SetGridSpacing(4, 4, 0)
+    grid.SetLineValue(60)
+    grid.SetFillValue(230)
+    grid.SetDataScalarTypeToUnsignedChar()
+    mapper = vtkImageSliceMapper()
+    mapper.SetInputConnection(grid.GetOutputPort())
+    image = vtkImageSlice()
+    image.SetMapper(mapper)
+    image.GetProperty().SetColorWindow(255)
+    image.GetProperty().SetColorLevel(127.5)
+    return [image]
+
+
+def case_volume():
+    source = vtkRTAnalyticSource()
+    source.SetWholeExtent(-10, 10, -10, 10, -10, 10)
+    mapper = vtkOpenGLGPUVolumeRayCastMapper()
+    mapper.SetInputConnection(source.GetOutputPort())
+    opacity = vtkPiecewiseFunction()
+    opacity.AddPoint(60, 0.0)
+    opacity.AddPoint(260, 0.4)
+    colors = vtkColorTransferFunction()
+    colors.AddRGBPoint(60, 0.2, 0.4, 1.0)
+    colors.AddRGBPoint(260, 1.0, 0.9, 0.5)
+    volume = vtkVolume()
+    volume.SetMapper(mapper)
+    volume.GetProperty().SetScalarOpacity(opacity)
+    volume.GetProperty().SetColor(colors)
+    volume.SetScale(0.03)
+    volume.SetPosition(0.0, 0.9, 0.0)
+    return [volume]
+
+
 # Translucent actors are drawn and receive shadows but cast none, as in VTK.
 TRANSLUCENT = {"casts": False}
 PEELED = {"casts": False, "peeling": True}
@@ -230,6 +283,10 @@ CASES = [
     ("PBR", case_pbr),
     ("translucent", case_translucent, TRANSLUCENT),
     ("translucent, depth peeling", case_translucent, PEELED),
+    # Drawn as plain VTK draws them; whether they cast is not asked here.
+    ("text (2D)", case_text, {"casts": None}),
+    ("image slice", case_image_slice, {"casts": None}),
+    ("volume", case_volume, {"casts": None}),
 ]
 
 
@@ -262,7 +319,7 @@ def render(props, name=None, peeling=False):
     floor.SetPoint2(-3, 0, -3)
     renderer.AddActor(actor_for(mapper_for(floor), (0.8, 0.8, 0.8)))
     for prop in props:
-        renderer.AddActor(prop)
+        renderer.AddViewProp(prop)
     light = vtkLight()
     light.SetLightTypeToSceneLight()
     light.SetPositional(True)
@@ -333,7 +390,7 @@ for case, build, *options in CASES:
                             % (label, np.median(difference), 100 * darkened))
         # Casts a shadow on the floor, and leaves the rest of it alone.
         shadow = floor & (shaded < 0.75 * floor_only)
-        if options.get("casts", True) and shadow.sum() < 15:
+        if options.get("casts", True) is True and shadow.sum() < 15:
             failures.append("%s: no shadow on the floor (%d pixels)" % (label, shadow.sum()))
         if shadow.sum() > 0.3 * floor.sum():
             failures.append("%s: %.0f%% of the floor darkened" % (label, 100.0 * shadow.mean()))
