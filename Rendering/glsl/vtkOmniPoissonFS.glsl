@@ -11,6 +11,19 @@ uniform vec2 omniPoisson[32]; // a Poisson disk in the unit disc
 uniform int omniTaps;
 uniform float omniLightRadius[VTK_SHADOW_CUBES];
 
+// The squared distance from the light, along tap direction `e`, to the
+// receiver's own plane (through `d`, the light-to-receiver vector, with
+// normal `n`), times the distance bias: what a tap compares the cube map
+// with. Comparing every tap with the receiver's own distance instead puts
+// surfaces seen at a grazing angle from the light in their own shadow
+// (noise and darkening on lit floors). A tap whose direction misses the
+// plane keeps the receiver's distance.
+float vtkOmniTapReference(vec3 n, vec3 d, vec3 e, float reference)
+{
+  float s = dot(n, d) / dot(n, e); // the plane's point along e is s * e
+  return s > 0.0 ? s * s * dot(e, e) * vtkShadowDistanceBias : reference;
+}
+
 float vtkOmniPoissonLookup(samplerCube cube, vec3 center, vec4 positionWC, vec3 normalWC,
   float range, float radius)
 {
@@ -19,6 +32,7 @@ float vtkOmniPoissonLookup(samplerCube cube, vec3 center, vec4 positionWC, vec3 
     center, positionWC, normalWC, vtkShadowCubeTexel, vtkShadowNormalBias, size);
   float receiver = length(d);
   float reference = dot(d, d) * vtkShadowDistanceBias;
+  vec3 n = normalWC;
   vec3 u, v;
   vtkShadowCubeBasis(d, u, v);
   float angle = 6.2831853 * fract(sin(dot(gl_FragCoord.xy, vec2(12.9898, 78.233))) * 43758.5453);
@@ -31,8 +45,9 @@ float vtkOmniPoissonLookup(samplerCube cube, vec3 center, vec4 positionWC, vec3 
   for (int i = 0; i < omniTaps; ++i)
   {
     vec2 o = rotation * omniPoisson[i] * (2.0 * radius);
-    float stored = vtkShadowCubeStored(cube, d + o.x * u + o.y * v, range);
-    if (stored < reference)
+    vec3 e = d + o.x * u + o.y * v;
+    float stored = vtkShadowCubeStored(cube, e, range);
+    if (stored < vtkOmniTapReference(n, d, e, reference))
     {
       blockers += sqrt(stored);
       count += 1.0;
@@ -49,7 +64,8 @@ float vtkOmniPoissonLookup(samplerCube cube, vec3 center, vec4 positionWC, vec3 
   for (int i = 0; i < omniTaps; ++i)
   {
     vec2 o = rotation * omniPoisson[i] * width;
-    lit += reference <= vtkShadowCubeStored(cube, d + o.x * u + o.y * v, range) ? 1.0 : 0.0;
+    vec3 e = d + o.x * u + o.y * v;
+    lit += vtkOmniTapReference(n, d, e, reference) <= vtkShadowCubeStored(cube, e, range) ? 1.0 : 0.0;
   }
   return lit / float(omniTaps);
 }
