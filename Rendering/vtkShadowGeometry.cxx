@@ -36,7 +36,7 @@ void vtkShadowGeometry::SetShaders(
 }
 
 //------------------------------------------------------------------------------
-bool vtkShadowGeometry::Upload(vtkOpenGLRenderWindow* context)
+bool vtkShadowGeometry::Upload()
 {
   if (this->Input && this->UploadTime >= this->Input->GetMTime() && this->VAO)
   {
@@ -126,14 +126,13 @@ bool vtkShadowGeometry::Upload(vtkOpenGLRenderWindow* context)
       add(array->GetName(), array, 0, components);
     }
   }
-  (void)context;
   return true;
 }
 
 //------------------------------------------------------------------------------
 bool vtkShadowGeometry::Draw(vtkOpenGLRenderWindow* context, const glm::dmat4& worldToClip)
 {
-  if (!this->Upload(context) || this->Vertices == 0)
+  if (!this->Upload() || this->Vertices == 0)
   {
     return true; // nothing to draw
   }

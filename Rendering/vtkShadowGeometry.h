@@ -66,7 +66,7 @@ private:
   vtkShadowGeometry(const vtkShadowGeometry&) = delete;
   void operator=(const vtkShadowGeometry&) = delete;
 
-  bool Upload(vtkOpenGLRenderWindow* context);
+  bool Upload();
 
   struct Attribute
   {
