@@ -77,7 +77,11 @@ void vtkShadowCasterRegistry::Update(vtkRenderer* renderer)
   props->InitTraversal(it);
   while (vtkProp* prop = props->GetNextProp(it))
   {
-    if (!prop->GetVisibility())
+    // A light's or camera's own picture casts no shadow (a light's cone
+    // would shadow the light); its parts are actors of its own, which the
+    // shadow shaders' hooks never reach, so drawing them into light-space
+    // maps would only shade them there and change how they draw after.
+    if (!prop->GetVisibility() || prop->IsA("vtkLightActor") || prop->IsA("vtkCameraActor"))
     {
       continue;
     }

@@ -13,7 +13,8 @@
  * tree), cached with vtkShadowCasterCache until the data changes, and
  * lights expressed in the caster's model space for per-mesh filters such as
  * vtkLightSilhouetteFilter. Glyph mappers' instances are not reached: their
- * props still cast through GetProps().
+ * props still cast through GetProps(). Light and camera actors (vtkLightActor,
+ * vtkCameraActor), pictures of the scene's lights and cameras, cast nothing.
  */
 
 #ifndef vtkShadowCasterRegistry_h

@@ -28,6 +28,7 @@ from vtkmodules.vtkImagingSources import vtkImageGridSource
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkColorTransferFunction, vtkGlyph3DMapper,
                                          vtkImageSlice, vtkImageSliceMapper, vtkLight,
+                                         vtkLightActor,
                                          vtkPolyDataMapper, vtkRenderWindow, vtkRenderer,
                                          vtkTextActor, vtkTexture, vtkVolume,
                                          vtkWindowToImageFilter)
@@ -257,6 +258,11 @@ def case_volume():
     return [volume]
 
 
+def case_light_actor():
+    """The scene's light drawn as a cone and frustum (see render())."""
+    return ["light actor"]
+
+
 # Translucent actors are drawn and receive shadows but cast none, as in VTK.
 TRANSLUCENT = {"casts": False}
 PEELED = {"casts": False, "peeling": True}
@@ -287,6 +293,9 @@ CASES = [
     ("text (2D)", case_text, {"casts": None}),
     ("image slice", case_image_slice, {"casts": None}),
     ("volume", case_volume, {"casts": None}),
+    # A picture of the light: drawn as plain VTK draws it, and casting nothing.
+    ("light actor", case_light_actor,
+     {"casts": False, "unlit": True, "view": ((5.0, 3.5, 6.0), (0.3, 2.0, 0.5))}),
 ]
 
 
@@ -307,7 +316,7 @@ def technique(name):
 TECHNIQUES = ["hard", "contact", "omni", "reference"]
 
 
-def render(props, name=None, peeling=False):
+def render(props, name=None, peeling=False, view=None):
     """RGB image (rows bottom first) of the floor, `props` and the light."""
     renderer = vtkRenderer()
     renderer.SetUseDepthPeeling(peeling)
@@ -319,7 +328,8 @@ def render(props, name=None, peeling=False):
     floor.SetPoint2(-3, 0, -3)
     renderer.AddActor(actor_for(mapper_for(floor), (0.8, 0.8, 0.8)))
     for prop in props:
-        renderer.AddViewProp(prop)
+        if prop != "light actor":
+            renderer.AddViewProp(prop)
     light = vtkLight()
     light.SetLightTypeToSceneLight()
     light.SetPositional(True)
@@ -328,9 +338,14 @@ def render(props, name=None, peeling=False):
     light.SetConeAngle(40.0)
     vtkSoftShadowPass.SetRadius(0.1, light)
     renderer.AddLight(light)
+    if "light actor" in props:
+        picture = vtkLightActor()
+        picture.SetLight(light)
+        picture.SetClippingRange(0.5, 4.0)  # the frustum ends above the floor, in view
+        renderer.AddViewProp(picture)
     camera = renderer.GetActiveCamera()
-    camera.SetPosition(0.0, 3.2, 3.6)
-    camera.SetFocalPoint(0.0, 0.5, 0.0)
+    camera.SetPosition(*(view[0] if view else (0.0, 3.2, 3.6)))
+    camera.SetFocalPoint(*(view[1] if view else (0.0, 0.5, 0.0)))
     renderer.ResetCameraClippingRange()
     if name:
         shadows = technique(name)
@@ -367,17 +382,27 @@ def on_error(caller, event, text):
 vtkOutputWindow.GetInstance().AddObserver(vtkCommand.ErrorEvent, on_error)
 
 failures = []
-floor_only = brightness(render([]))
 for case, build, *options in CASES:
     options = options[0] if options else {}
     peeling = options.get("peeling", False)
-    plain = brightness(render(build(), peeling=peeling))
+    view = options.get("view")
+    floor_only = brightness(render([], view=view))
+    plain = brightness(render(build(), peeling=peeling, view=view))
     actor = np.abs(plain - floor_only) > 3.0
     floor = ~actor & (floor_only > 10.0)
     lit_actor = actor & (plain > 40.0)
     for name in TECHNIQUES:
-        shaded = brightness(render(build(), name, peeling))
+        shaded = brightness(render(build(), name, peeling, view))
         label = "%s, %s" % (case, name)
+        if options.get("unlit"):
+            # Drawn as plain VTK draws it, pixel for pixel (its lines are black).
+            changed = np.mean(np.abs(shaded[actor] - plain[actor]) > 10.0)
+            if actor.sum() < 20 or changed > 0.01:
+                failures.append("%s: %d pixels, %.1f%% of them not as plain VTK draws them"
+                                % (label, actor.sum(), 100 * changed))
+            print("%-40s %-9s %.1f%% of %d pixels changed" % (case, name, 100 * changed,
+                                                            actor.sum()))
+            continue
         if lit_actor.sum() < 20:
             failures.append("%s: plain VTK lights too little of the actor to judge" % label)
             continue
