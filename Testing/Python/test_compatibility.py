@@ -294,6 +294,8 @@ CASES = [
     ("image slice", case_image_slice, {"casts": None}),
     ("volume", case_volume, {"casts": None}),
     # A picture of the light: drawn as plain VTK draws it, and casting nothing.
+    # The same, in a viewport off the window's corner beside another renderer.
+    ("surface, in a viewport", case_surface, {"viewport": (0.25, 0.1, 1.0, 0.95)}),
     ("light actor", case_light_actor,
      {"casts": False, "unlit": True, "view": ((5.0, 3.5, 6.0), (0.3, 2.0, 0.5))}),
 ]
@@ -316,9 +318,13 @@ def technique(name):
 TECHNIQUES = ["hard", "contact", "omni", "reference"]
 
 
-def render(props, name=None, peeling=False, view=None):
-    """RGB image (rows bottom first) of the floor, `props` and the light."""
+def render(props, name=None, peeling=False, view=None, viewport=None):
+    """RGB image (rows bottom first) of the floor, `props` and the light;
+    with `viewport`, in a renderer over that part of the window, beside a
+    second, empty renderer over the rest."""
     renderer = vtkRenderer()
+    if viewport:
+        renderer.SetViewport(*viewport)
     renderer.SetUseDepthPeeling(peeling)
     renderer.AutomaticLightCreationOff()
     renderer.SetBackground(0.0, 0.0, 0.4)
@@ -355,6 +361,11 @@ def render(props, name=None, peeling=False, view=None):
     window.SetSize(*SIZE)
     window.SetMultiSamples(0)
     window.AddRenderer(renderer)
+    if viewport:
+        other = vtkRenderer()
+        other.SetBackground(0.3, 0.0, 0.0)
+        other.SetViewport(0.0, 0.0, viewport[0], 1.0)
+        window.AddRenderer(other)
     window.Render()
     grab = vtkWindowToImageFilter()
     grab.SetInput(window)
@@ -386,13 +397,14 @@ for case, build, *options in CASES:
     options = options[0] if options else {}
     peeling = options.get("peeling", False)
     view = options.get("view")
-    floor_only = brightness(render([], view=view))
-    plain = brightness(render(build(), peeling=peeling, view=view))
+    viewport = options.get("viewport")
+    floor_only = brightness(render([], view=view, viewport=viewport))
+    plain = brightness(render(build(), peeling=peeling, view=view, viewport=viewport))
     actor = np.abs(plain - floor_only) > 3.0
     floor = ~actor & (floor_only > 10.0)
     lit_actor = actor & (plain > 40.0)
     for name in TECHNIQUES:
-        shaded = brightness(render(build(), name, peeling, view))
+        shaded = brightness(render(build(), name, peeling, view, viewport))
         label = "%s, %s" % (case, name)
         if options.get("unlit"):
             # Drawn as plain VTK draws it, pixel for pixel (its lines are black).
