@@ -42,9 +42,9 @@ bool vtkShadowShaderHooks::PreReplaceShaderValues(std::string& vertexShader,
     }
     else
     {
-      sources.AddMiss("layered cube-map drawing (it has a geometry shader of its own, for edges "
-                      "or wide lines: it casts into one cube face only; turn SinglePassCubeMaps "
-                      "off for such scenes)");
+      sources.AddMiss("it has a geometry shader of its own (edges or wide lines), so it casts "
+                      "into one face of a point light's cube map only; turn SinglePassCubeMaps "
+                      "off for such scenes");
     }
   }
   this->Stage->PreReplace(sources);
@@ -90,9 +90,7 @@ void vtkShadowShaderHooks::Report(vtkShadowShaderSources& sources)
   {
     if (this->Reported.insert({ mapper, what }).second)
     {
-      vtkWarningMacro(<< mapper << ": its shader lacks the code the shadows edit for " << what
-                      << ", so its actors are drawn without it (a custom shader replacement, or "
-                         "mapper code other than vtkShadowMapperCode.h expects).");
+      vtkWarningMacro(<< mapper << ": " << what << ".");
     }
   }
 }

@@ -19,7 +19,9 @@ bool vtkShadowShaderSources::Require(std::string& source, const std::string& tag
   const bool found = vtkShaderProgram::Substitute(source, tag, code, all);
   if (!found)
   {
-    this->AddMiss(what);
+    this->AddMiss("its shader lacks the code the shadows edit for " + what +
+      ", so its actors are drawn without it (a custom shader replacement, or mapper code other "
+      "than vtkShadowMapperCode.h expects)");
   }
   return found;
 }

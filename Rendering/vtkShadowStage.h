@@ -67,9 +67,10 @@ public:
   /// Whether the fragment shader has a lit view-space position (see vtkShadowMapperCode).
   bool IsLit() const;
 
-  /// What Require() did not find, in order.
+  /// What the mapper's actors miss, one sentence each after the mapper's
+  /// name (Require()'s misses, and any a stage adds), in order.
   const std::vector<std::string>& GetMisses() const { return this->Misses; }
-  void AddMiss(const std::string& what) { this->Misses.push_back(what); }
+  void AddMiss(const std::string& sentence) { this->Misses.push_back(sentence); }
 
 private:
   std::vector<std::string> Misses;

@@ -1,5 +1,6 @@
 #include "vtkSoftShadowPass.h"
 
+#include "vtkAbstractMapper.h"
 #include "vtkCamera.h"
 #include "vtkDualDepthPeelingPass.h"
 #include "vtkInformation.h"
@@ -195,6 +196,11 @@ void vtkSoftShadowPass::vtkReceiverStage::PostReplace(vtkShadowShaderSources& so
   const auto& lights = pass->Maps->GetLights();
   const bool lit = sources.IsLit();
   const bool active = lit && !lights.empty();
+  if (!lights.empty() && sources.Mapper && sources.Mapper->IsA("vtkVolumeMapper"))
+  {
+    sources.AddMiss("volumes receive no shadows from " + std::string(pass->GetClassName()) +
+      "; they are drawn as VTK draws them without it");
+  }
 
   std::string onlyVisibility = "1.0";
   std::string unscaled; // lights whose lighting lines were not found
@@ -253,7 +259,9 @@ void vtkSoftShadowPass::vtkReceiverStage::PostReplace(vtkShadowShaderSources& so
       sources.Require(fragmentShader, vtkShadowMapperCode::ShadowImpl, impl.str(), what) &&
       !unscaled.empty())
     {
-      sources.AddMiss("the shadow of light " + unscaled + " (no lighting line to scale)");
+      sources.AddMiss("its lighting code has no line the shadow of light " + unscaled +
+        " can scale, so its actors are drawn without that shadow (a custom shader replacement, "
+        "or mapper code other than vtkShadowMapperCode.h expects)");
     }
   }
   else

@@ -8,7 +8,9 @@ technique. Then, against plain VTK's picture:
   brightness (nothing lies between them and the light; only the actor's own
   terminator may move a little);
 - casting: the floor darkens where the actor's shadow falls;
-- no stray darkness: most of the floor stays as plain VTK draws it.
+- no stray darkness: most of the floor stays as plain VTK draws it;
+- no error from VTK, and a warning only where a mapper cannot be shadowed
+  (volumes), naming it.
 Every failure is listed before the test fails.
 """
 import sys
@@ -292,7 +294,7 @@ CASES = [
     # Drawn as plain VTK draws them; whether they cast is not asked here.
     ("text (2D)", case_text, {"casts": None}),
     ("image slice", case_image_slice, {"casts": None}),
-    ("volume", case_volume, {"casts": None}),
+    ("volume", case_volume, {"casts": None, "warns": "vtkOpenGLGPUVolumeRayCastMapper"}),
     # A picture of the light: drawn as plain VTK draws it, and casting nothing.
     # The same, in a viewport off the window's corner beside another renderer.
     ("surface, in a viewport", case_surface, {"viewport": (0.25, 0.1, 1.0, 0.95)}),
@@ -391,6 +393,16 @@ def on_error(caller, event, text):
 
 
 vtkOutputWindow.GetInstance().AddObserver(vtkCommand.ErrorEvent, on_error)
+# Warnings only where a mapper cannot be shadowed: one, naming it.
+warnings = []
+
+
+@calldata_type(VTK_STRING)
+def on_warning(caller, event, text):
+    warnings.append(text)
+
+
+vtkOutputWindow.GetInstance().AddObserver(vtkCommand.WarningEvent, on_warning)
 
 failures = []
 for case, build, *options in CASES:
@@ -431,6 +443,13 @@ for case, build, *options in CASES:
             failures.append("%s: no shadow on the floor (%d pixels)" % (label, shadow.sum()))
         if shadow.sum() > 0.3 * floor.sum():
             failures.append("%s: %.0f%% of the floor darkened" % (label, 100.0 * shadow.mean()))
+        expected = options.get("warns")
+        named = [w for w in warnings if expected and expected in w]
+        if len(named) != (1 if expected else 0) or len(warnings) != len(named):
+            failures.append("%s: %d warning(s), expected %s: %s" % (
+                label, len(warnings), "one naming " + expected if expected else "none",
+                " | ".join(w.strip()[-200:] for w in warnings)))
+        warnings.clear()
         if errors:
             failures.append("%s: VTK reported %d error(s), the first: %s"
                             % (label, len(errors), errors[0].strip()[:300]))
