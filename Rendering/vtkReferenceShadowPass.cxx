@@ -147,7 +147,8 @@ bool vtkReferenceShadowPass::AccumulateSample(const vtkRenderState* s, int slot,
   {
     this->Maps->AllocateCubeMap(context, sample, this->MapSize, this->PackedCubeMaps);
     map = sample.CubeMap;
-    if (!this->RenderDistanceCube(s, this->Maps->CubeFaces(eye), map))
+    sample.Faces = this->Maps->CubeFaces(eye);
+    if (!this->RenderDistanceCube(s, sample.Faces, map))
     {
       return false;
     }
@@ -175,7 +176,7 @@ bool vtkReferenceShadowPass::AccumulateSample(const vtkRenderState* s, int slot,
       {
         program->SetUniformi("referenceCube", map->GetTextureUnit());
         vtkShadowMapManager::SetCubeUniforms(
-          program, "reference", "", this->Maps->CubeFaces(eye), this->PackedCubeMaps);
+          program, "reference", "", sample.Faces, this->PackedCubeMaps);
         vtkShadowMapManager::SetLookupUniforms(
           program, "reference", this->MapSize, this->NormalBias, this->DistanceBias);
         program->SetUniformf("referenceWeight", weight);

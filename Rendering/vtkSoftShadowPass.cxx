@@ -249,11 +249,8 @@ void vtkSoftShadowPass::vtkReceiverStage::PostReplace(vtkShadowShaderSources& so
         onlyVisibility = "vtkShadowVisibility" + std::to_string(n);
       }
     }
-  }
-  // A lit shader must have kept the tags and the lighting lines; others
-  // only lose the tags. One word per shader: the first thing missing.
-  if (active)
-  {
+    // A lit shader must have kept the tags and the lighting lines; others
+    // only lose the tags. One word per shader: the first thing missing.
     const std::string what = "the shadow term";
     if (sources.Require(fragmentShader, vtkShadowMapperCode::ShadowDec, dec.str(), what) &&
       sources.Require(fragmentShader, vtkShadowMapperCode::ShadowImpl, impl.str(), what) &&

@@ -29,7 +29,6 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOutputWindow.h"
-#include "vtkPNGWriter.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
@@ -52,7 +51,6 @@
 #include "vtkTransform.h"
 #include "vtkTransformPolyDataFilter.h"
 #include "vtkUnsignedCharArray.h"
-#include "vtkWindowToImageFilter.h"
 #include "vtk_glew.h"
 
 #include <glm/matrix.hpp>
@@ -60,7 +58,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <map>
 #include <memory>
 #include <string>
@@ -361,16 +358,6 @@ std::map<int, double> Greys(vtkRenderWindow* window, const std::vector<double>& 
 {
   int* size = window->GetSize();
   x1 = x1 < 0 ? size[0] : x1;
-  if (const char* debug = std::getenv("PROBE_DEBUG"))
-  {
-    static int count = 0;
-    vtkNew<vtkWindowToImageFilter> grab;
-    grab->SetInput(window);
-    vtkNew<vtkPNGWriter> writer;
-    writer->SetInputConnection(grab->GetOutputPort());
-    writer->SetFileName((std::string(debug) + std::to_string(count++) + ".png").c_str());
-    writer->Write();
-  }
   vtkNew<vtkUnsignedCharArray> rgb;
   window->GetPixelData(0, 0, size[0] - 1, size[1] - 1, 0, rgb);
   std::map<int, double> shares;
