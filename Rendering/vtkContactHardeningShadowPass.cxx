@@ -147,9 +147,10 @@ int vtkContactHardeningShadowPass::KernelSize(int pass) const
 //------------------------------------------------------------------------------
 bool vtkContactHardeningShadowPass::RenderShadowMaps(const vtkRenderState* s)
 {
-  // Pass 1. Unfiltered: pass 2 reads raw depths, the translucent fallback
-  // compares binary.
-  return this->RenderLightDepthMaps(s, false);
+  // Pass 1. Filtered bilinearly for the receivers' own hard shadow (where
+  // no blur reaches, its edge is smoothed as `hard`'s is); pass 2 reads raw
+  // depths through a nearest sampler.
+  return this->RenderLightDepthMaps(s, true);
 }
 
 //------------------------------------------------------------------------------

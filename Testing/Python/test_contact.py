@@ -35,6 +35,18 @@ for divisor in (1, 2):
     st.check(far_out > at_base + 2.0, "divisor %d: away from contact it softens: %.1f px"
              % (divisor, far_out))
 
+# A light too small for any blur: every variant draws `hard`'s shadow, its
+# edges filtered as smoothly (the receivers once compared an unfiltered map
+# and stair-stepped where `hard` does not).
+scene = st.post_scene(light_radius=0.01)
+hard, mask = st.shadow_only(scene, "hard")
+for variant in ("pcf", "gaussian", "multipass"):
+    visibility, _ = st.shadow_only(scene, "contact:" + variant)
+    worst = float(np.abs(visibility - hard)[mask].max())
+    print("light radius 0.01, contact:%s against hard: largest difference %.3f" % (variant, worst))
+    st.check(worst < 0.02, "contact:%s with a tiny light is hard's shadow (largest difference %.3f)"
+             % (variant, worst))
+
 # Quality against the reference: RMSE of visibility over SPEC's pixels.
 scene = st.ball_scene(height=1.5, light_radius=radius, size=(240, 180),
                       technique="reference", params={"samples": 256})
