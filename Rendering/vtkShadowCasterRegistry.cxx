@@ -1,12 +1,15 @@
 #include "vtkShadowCasterRegistry.h"
 
 #include "vtkActor.h"
+#include "vtkAssemblyNode.h"
+#include "vtkAssemblyPath.h"
 #include "vtkCompositeDataDisplayAttributes.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkCompositePolyDataMapper2.h"
 #include "vtkDataObjectTree.h"
 #include "vtkDataObjectTreeIterator.h"
 #include "vtkMatrix4x4.h"
+#include "vtkNew.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkPropCollection.h"
@@ -86,34 +89,74 @@ void vtkShadowCasterRegistry::Update(vtkRenderer* renderer)
       continue;
     }
     this->Props.push_back(prop);
+    this->AddActors(prop);
+  }
+}
 
-    auto* actor = vtkActor::SafeDownCast(prop);
-    auto* mapper = actor ? vtkPolyDataMapper::SafeDownCast(actor->GetMapper()) : nullptr;
-    if (!mapper)
+//------------------------------------------------------------------------------
+void vtkShadowCasterRegistry::AddActors(vtkProp* prop)
+{
+  // The actors `prop` draws: itself, an assembly's visible parts (their
+  // matrices composed along the path), or the parts a composite prop lists
+  // (vtkAxesActor's, placed by their own matrices).
+  vtkNew<vtkPropCollection> parts;
+  prop->InitPathTraversal();
+  while (vtkAssemblyPath* path = prop->GetNextPath())
+  {
+    vtkAssemblyNode* node = path->GetLastNode();
+    vtkProp* leaf = node->GetViewProp();
+    if (!leaf->GetVisibility())
     {
       continue;
     }
-    vtkShadowCaster caster;
-    caster.Prop = prop;
-    caster.Actor = actor;
-    caster.Opaque = actor->HasOpaqueGeometry() != 0;
-    caster.ModelToWorld = vtkShadowMatrices::FromVTK(actor->GetMatrix());
-    caster.WorldToModel = glm::inverse(caster.ModelToWorld);
-
-    // The input is up to date: the renderer asked the mappers for bounds.
-    vtkDataObject* input = mapper->GetInputDataObject(0, 0);
-    if (auto* data = vtkPolyData::SafeDownCast(input))
+    if (auto* actor = vtkActor::SafeDownCast(leaf))
     {
-      caster.Data = data;
-      this->Casters.push_back(caster);
+      this->AddActor(prop, actor, node->GetMatrix() ? node->GetMatrix() : actor->GetMatrix());
       continue;
     }
-    auto* compositeMapper = vtkCompositePolyDataMapper2::SafeDownCast(mapper);
-    if (vtkCompositeDataSet::SafeDownCast(input) && compositeMapper)
+    parts->RemoveAllItems();
+    leaf->GetActors(parts);
+    vtkCollectionSimpleIterator it;
+    parts->InitTraversal(it);
+    while (vtkProp* part = parts->GetNextProp(it))
     {
-      unsigned int flatIndex = 0;
-      this->AddBlocks(
-        input, true, flatIndex, compositeMapper->GetCompositeDataDisplayAttributes(), caster);
+      auto* actor = vtkActor::SafeDownCast(part);
+      if (part != leaf && actor && actor->GetVisibility())
+      {
+        this->AddActor(prop, actor, actor->GetMatrix());
+      }
     }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowCasterRegistry::AddActor(vtkProp* prop, vtkActor* actor, vtkMatrix4x4* matrix)
+{
+  auto* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
+  if (!mapper)
+  {
+    return;
+  }
+  vtkShadowCaster caster;
+  caster.Prop = prop;
+  caster.Actor = actor;
+  caster.Opaque = actor->HasOpaqueGeometry() != 0;
+  caster.ModelToWorld = vtkShadowMatrices::FromVTK(matrix);
+  caster.WorldToModel = glm::inverse(caster.ModelToWorld);
+
+  // The input is up to date: the renderer asked the mappers for bounds.
+  vtkDataObject* input = mapper->GetInputDataObject(0, 0);
+  if (auto* data = vtkPolyData::SafeDownCast(input))
+  {
+    caster.Data = data;
+    this->Casters.push_back(caster);
+    return;
+  }
+  auto* compositeMapper = vtkCompositePolyDataMapper2::SafeDownCast(mapper);
+  if (vtkCompositeDataSet::SafeDownCast(input) && compositeMapper)
+  {
+    unsigned int flatIndex = 0;
+    this->AddBlocks(
+      input, true, flatIndex, compositeMapper->GetCompositeDataDisplayAttributes(), caster);
   }
 }

@@ -8,7 +8,9 @@
  * (vtkSoftShadowPass::Render()). GetProps() are what light-space draws
  * render through VTK's mappers; GetCasters() give a technique each
  * polydata (each visible block of a vtkCompositePolyDataMapper2, block
- * visibility inherited as the mapper does) to derive
+ * visibility inherited as the mapper does; each visible part of a
+ * vtkAssembly, and of composite props that list their parts, such as
+ * vtkAxesActor) to derive
  * its own data from (a topology aware mesh, an edge table, a silhouette
  * tree), cached with vtkShadowCasterCache until the data changes, and
  * lights expressed in the caster's model space for per-mesh filters such as
@@ -35,6 +37,7 @@
 class vtkActor;
 class vtkCompositeDataDisplayAttributes;
 class vtkDataObject;
+class vtkMatrix4x4;
 class vtkPolyData;
 class vtkProp;
 class vtkRenderer;
@@ -42,11 +45,11 @@ class vtkRenderer;
 /// One polydata drawn by a visible actor.
 struct VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowCaster
 {
-  vtkProp* Prop = nullptr;        ///< not owned; valid during a frame
-  vtkActor* Actor = nullptr;      ///< the prop as an actor
+  vtkProp* Prop = nullptr;        ///< the renderer's prop; not owned; valid during a frame
+  vtkActor* Actor = nullptr;      ///< the actor drawing Data: Prop, or a part of it
   vtkPolyData* Data = nullptr;    ///< the mapper's input, or one block of it
   unsigned int FlatIndex = 0;     ///< the block's flat index in a composite input; 0 otherwise
-  glm::dmat4 ModelToWorld{ 1.0 }; ///< the actor's matrix
+  glm::dmat4 ModelToWorld{ 1.0 }; ///< the actor's matrix, an assembly's composed in
   glm::dmat4 WorldToModel{ 1.0 };
   bool Opaque = true; ///< the actor is drawn in the opaque pass
 
@@ -68,6 +71,8 @@ public:
   const std::vector<vtkShadowCaster>& GetCasters() const { return this->Casters; }
 
 private:
+  void AddActors(vtkProp* prop);
+  void AddActor(vtkProp* prop, vtkActor* actor, vtkMatrix4x4* matrix);
   void AddBlocks(vtkDataObject* node, bool visible, unsigned int& flatIndex,
     vtkCompositeDataDisplayAttributes* attributes, const vtkShadowCaster& actor);
 

@@ -1,7 +1,13 @@
 #include "vtkShadowShaderHooks.h"
 
 #include "vtkAbstractMapper.h"
+#include "vtkActor.h"
+#include "vtkInformation.h"
+#include "vtkInformationObjectBaseVectorKey.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkPropCollection.h"
+#include "vtkRenderState.h"
 #include "vtkShaderProgram.h"
 #include "vtkShadowStage.h"
 
@@ -21,6 +27,68 @@ void vtkShadowShaderHooks::SetStage(vtkShadowStage* stage, const float (*faceFro
     this->FaceFromFirst = faceFromFirst;
     this->StageTime.Modified();
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowShaderHooks::Attach(const vtkRenderState* s)
+{
+  this->PreRender(s);
+  vtkNew<vtkPropCollection> parts;
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    if (vtkActor::SafeDownCast(prop))
+    {
+      continue;
+    }
+    parts->RemoveAllItems();
+    prop->GetActors(parts);
+    vtkCollectionSimpleIterator it;
+    parts->InitTraversal(it);
+    while (vtkProp* part = parts->GetNextProp(it))
+    {
+      vtkInformation* keys = part->GetPropertyKeys();
+      if (part == prop || (keys && keys == prop->GetPropertyKeys()))
+      {
+        continue;
+      }
+      if (!keys)
+      {
+        vtkNew<vtkInformation> created;
+        part->SetPropertyKeys(created);
+        keys = created;
+      }
+      vtkInformationObjectBaseVectorKey* key = vtkOpenGLRenderPass::RenderPasses();
+      bool registered = false;
+      for (int k = 0; k < keys->Length(key); ++k)
+      {
+        registered = registered || keys->Get(key, k) == this;
+      }
+      if (!registered)
+      {
+        keys->Append(key, this);
+        this->Parts.emplace_back(part);
+      }
+    }
+  }
+}
+
+void vtkShadowShaderHooks::Detach(const vtkRenderState* s)
+{
+  vtkInformationObjectBaseVectorKey* key = vtkOpenGLRenderPass::RenderPasses();
+  for (vtkProp* part : this->Parts)
+  {
+    if (vtkInformation* keys = part->GetPropertyKeys())
+    {
+      keys->Remove(key, this);
+      if (keys->Length(key) == 0)
+      {
+        keys->Remove(key);
+      }
+    }
+  }
+  this->Parts.clear();
+  this->PostRender(s);
 }
 
 //------------------------------------------------------------------------------

@@ -14,11 +14,13 @@
 #define vtkShadowShaderHooks_h
 
 #include "vtkOpenGLRenderPass.h"
+#include "vtkSmartPointer.h"               // for vtkSmartPointer
 #include "vtkSoftShadowsRenderingModule.h" // for export macro
 
 #include <set>     // for std::set
 #include <string>  // for std::string
 #include <utility> // for std::pair
+#include <vector>  // for std::vector
 
 class vtkShadowStage;
 
@@ -39,9 +41,15 @@ public:
   vtkShadowStage* GetStage() const { return this->Stage; }
 
   ///@{
-  /** Register on (remove from) the props of `s`. */
-  void Attach(const vtkRenderState* s) { this->PreRender(s); }
-  void Detach(const vtkRenderState* s) { this->PostRender(s); }
+  /**
+   * Register on (remove from) the props of `s`, and on the parts of
+   * composite props that draw their parts without handing on their keys
+   * (vtkAxesActor's shafts and tips; parts of vtkAssembly share its keys
+   * already). Parts a prop does not list (vtkProp::GetActors()), such as
+   * vtkLightActor's, draw as plain VTK draws them.
+   */
+  void Attach(const vtkRenderState* s);
+  void Detach(const vtkRenderState* s);
   ///@}
 
   void Render(const vtkRenderState*) override {}
@@ -64,6 +72,7 @@ private:
 
   void Report(class vtkShadowShaderSources& sources);
 
+  std::vector<vtkSmartPointer<vtkProp>> Parts; ///< parts registered on by Attach()
   vtkShadowStage* Stage = nullptr;
   const float (*FaceFromFirst)[16] = nullptr;
   vtkTimeStamp StageTime;

@@ -5,15 +5,17 @@
 // - those per-light textures bound in the receivers and read back there;
 // - a compute pass (image store, SSBO atomics) writing a visibility texture
 //   the receivers read;
-// - the casters: each actor's polydata and a composite mapper's visible
-//   blocks;
+// - the casters: each actor's polydata, a composite mapper's visible
+//   blocks, and an assembly's part;
 // - a per-caster cache that rebuilds when a polydata is modified, and not
 //   otherwise, and forgets casters that left the scene;
-// - lights in a transformed actor's model space (silhouettes match those of
-//   the transformed mesh under the world light);
+// - lights in a transformed actor's model space, the actor a part of a
+//   transformed assembly (silhouettes match those of the transformed mesh
+//   under the world light);
 // - a mapper whose shader lacks the lines the shadow term edits gets one
 //   warning naming it.
 #include "vtkActor.h"
+#include "vtkAssembly.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCommand.h"
@@ -24,6 +26,7 @@
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkLightSilhouetteFilter.h"
+#include "vtkMatrix4x4.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -160,7 +163,7 @@ public:
   // Results of the last frame.
   std::vector<std::vector<float>> LightTexels; ///< per light, the MIN-blended target
   unsigned int Invocations = 0;
-  std::map<vtkProp*, vtkIdType> Silhouettes; ///< per caster, with the model-space light
+  std::map<vtkActor*, vtkIdType> Silhouettes; ///< per caster, with the model-space light
   std::vector<std::pair<vtkProp*, unsigned int>> CastersSeen; ///< prop and block of each caster
   struct Derived
   {
@@ -196,7 +199,7 @@ protected:
       const glm::dvec3 light = caster.PointToModel(lights[0].Position);
       derived.Filter->SetLightPosition(light.x, light.y, light.z);
       derived.Filter->Update();
-      this->Silhouettes[caster.Prop] = derived.Filter->GetNumberOfSilhouetteEdges();
+      this->Silhouettes[caster.Actor] = derived.Filter->GetNumberOfSilhouetteEdges();
     }
     this->Cache.Prune(*this->Casters);
 
@@ -452,11 +455,18 @@ int TestFrameworkEntryPoints(int, char*[])
   pebbles->SetMapper(compositeMapper);
   renderer->AddActor(pebbles);
 
-  // The box: rotated, scaled unevenly and moved.
+  // The box: rotated, scaled unevenly and moved, inside an assembly turned
+  // and moved too.
   vtkActor* boxActor = actors[2];
   boxActor->SetOrientation(20.0, 35.0, 10.0);
   boxActor->SetScale(0.6, 0.3, 0.9);
-  boxActor->SetPosition(1.3, 0.4, 0.6);
+  boxActor->SetPosition(1.0, 0.4, 0.2);
+  renderer->RemoveActor(boxActor);
+  vtkNew<vtkAssembly> assembly;
+  assembly->AddPart(boxActor);
+  assembly->SetOrientation(0.0, 15.0, 0.0);
+  assembly->SetPosition(0.3, 0.0, 0.4);
+  renderer->AddViewProp(assembly);
 
   for (double x : { 1.0, -1.5 })
   {
@@ -533,8 +543,8 @@ int TestFrameworkEntryPoints(int, char*[])
         std::to_string(strays * 100.0) + "% other pixels)");
   }
 
-  // The casters: three actors' polydata, and the composite's visible blocks
-  // (flat indices 1 and 4).
+  // The casters: two actors' polydata, the assembly's box, and the
+  // composite's visible blocks (flat indices 1 and 4).
   std::vector<unsigned int> pebbleBlocks;
   for (const auto& seen : pass->CastersSeen)
   {
@@ -543,8 +553,11 @@ int TestFrameworkEntryPoints(int, char*[])
       pebbleBlocks.push_back(seen.second);
     }
   }
-  Check(pass->CastersSeen.size() == 5 && pebbleBlocks == std::vector<unsigned int>{ 1, 4 },
-    "five casters: three actors and the composite's two visible blocks (" +
+  const bool boxSeen = std::count(pass->CastersSeen.begin(), pass->CastersSeen.end(),
+                         std::make_pair(static_cast<vtkProp*>(assembly.Get()), 0u)) == 1;
+  Check(
+    pass->CastersSeen.size() == 5 && boxSeen && pebbleBlocks == std::vector<unsigned int>{ 1, 4 },
+    "five casters: two actors, the assembly's box and the composite's two visible blocks (" +
       std::to_string(pass->CastersSeen.size()) + ")");
 
   // The per-caster cache: built once per polydata...
@@ -561,7 +574,9 @@ int TestFrameworkEntryPoints(int, char*[])
   // box transformed into the world, under the world light.
   vtkNew<vtkTransformPolyDataFilter> world;
   vtkNew<vtkTransform> transform;
-  transform->SetMatrix(boxActor->GetMatrix());
+  vtkNew<vtkMatrix4x4> boxToWorld;
+  vtkMatrix4x4::Multiply4x4(assembly->GetMatrix(), boxActor->GetMatrix(), boxToWorld);
+  transform->SetMatrix(boxToWorld);
   world->SetTransform(transform);
   world->SetInputConnection(box->GetOutputPort());
   vtkNew<vtkLightSilhouetteFilter> reference;
@@ -576,10 +591,10 @@ int TestFrameworkEntryPoints(int, char*[])
       std::to_string(reference->GetNumberOfSilhouetteEdges()) + " edges)");
 
   // ...and forgets a caster that left the scene.
-  renderer->RemoveActor(boxActor);
+  renderer->RemoveViewProp(assembly);
   window->Render();
   Check(pass->Cache.GetNumberOfEntries() == 4, "a removed caster leaves the cache");
-  renderer->AddActor(boxActor);
+  renderer->AddViewProp(assembly);
 
   // A compute pass writes the visibility the receivers read.
   pass->UseCompute = true;
