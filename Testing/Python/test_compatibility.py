@@ -8,6 +8,9 @@ technique. Then, against plain VTK's picture:
   brightness (nothing lies between them and the light; only the actor's own
   terminator may move a little);
 - casting: the floor darkens where the actor's shadow falls;
+- receiving: with a plate high above (out of view) between it and the
+  light, the actor's lit pixels go dark; what VTK draws unlit (lines without
+  normals, image slices, text) stays as it is;
 - no stray darkness: most of the floor stays as plain VTK draws it;
 - no error from VTK, and a warning only where a mapper cannot be shadowed
   (volumes), naming it.
@@ -20,7 +23,8 @@ import vtkmodules.vtkInteractionStyle  # noqa: F401
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 from vtkmodules.util.misc import calldata_type
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand, vtkOutputWindow, vtkPoints
+from vtkmodules.vtkCommonCore import (VTK_STRING, vtkCommand, vtkFloatArray, vtkOutputWindow,
+                                      vtkPoints, vtkUnsignedCharArray)
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkMolecule, vtkMultiBlockDataSet, vtkPolyData
 from vtkmodules.vtkDomainsChemistryOpenGL2 import vtkOpenGLMoleculeMapper
 from vtkmodules.vtkFiltersCore import vtkElevationFilter, vtkPolyDataNormals
@@ -28,7 +32,9 @@ from vtkmodules.vtkFiltersSources import (vtkCubeSource, vtkLineSource, vtkPlane
                                           vtkSphereSource, vtkTexturedSphereSource)
 from vtkmodules.vtkImagingSources import vtkImageGridSource
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkColorTransferFunction, vtkGlyph3DMapper,
+from vtkmodules.vtkRenderingAnnotation import vtkAxesActor
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkAssembly, vtkColorTransferFunction,
+                                         vtkGlyph3DMapper,
                                          vtkImageSlice, vtkImageSliceMapper, vtkLight,
                                          vtkLightActor,
                                          vtkPolyDataMapper, vtkRenderWindow, vtkRenderer,
@@ -37,7 +43,8 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkColorTransferFunction, vtk
 from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
 from vtkmodules.vtkRenderingVolumeOpenGL2 import vtkOpenGLGPUVolumeRayCastMapper
 import vtkmodules.vtkRenderingFreeType  # noqa: F401
-from vtkmodules.vtkRenderingOpenGL2 import (vtkCompositePolyDataMapper2, vtkOpenGLSphereMapper)
+from vtkmodules.vtkRenderingOpenGL2 import (vtkCompositePolyDataMapper2, vtkOpenGLSphereMapper,
+                                            vtkOpenGLStickMapper)
 from vtksoftshadows import (vtkContactHardeningShadowPass, vtkHardShadowPass,
                             vtkOmnidirectionalShadowPass, vtkReferenceShadowPass,
                             vtkSoftShadowPass)
@@ -134,6 +141,57 @@ def case_sphere_imposters():
     mapper.SetInputData(three_points())
     mapper.SetRadius(0.22)
     return [actor_for(mapper)]
+
+
+def case_stick_imposters():
+    """Three sticks, along x, z and x: vtkOpenGLStickMapper ray-casts them in
+    the fragment shader (molecules' bonds without the molecule mapper). It
+    reads colours from scalars, which it needs."""
+    data = three_points()
+    colors = vtkUnsignedCharArray()
+    colors.SetNumberOfComponents(3)
+    orientation = vtkFloatArray()
+    orientation.SetName("orientation")
+    orientation.SetNumberOfComponents(3)
+    scale = vtkFloatArray()
+    scale.SetName("scale")
+    scale.SetNumberOfComponents(3)  # length, radius, unused
+    for direction in ((1, 0, 0), (0, 0, 1), (1, 0, 0)):
+        orientation.InsertNextTuple3(*direction)
+        scale.InsertNextTuple3(0.45, 0.1, 0.0)
+        colors.InsertNextTuple3(230, 128, 77)
+    data.GetPointData().SetScalars(colors)
+    data.GetPointData().AddArray(orientation)
+    data.GetPointData().AddArray(scale)
+    mapper = vtkOpenGLStickMapper()
+    mapper.SetInputData(data)
+    mapper.SetOrientationArray("orientation")
+    mapper.SetScaleArray("scale")
+    return [actor_for(mapper)]
+
+
+def case_assembly():
+    """Two balls as parts of a moved vtkAssembly: its parts take its keys."""
+    assembly = vtkAssembly()
+    for x in (-0.45, 0.45):
+        sphere = vtkSphereSource()
+        sphere.SetCenter(x, 0.0, 0.0)
+        sphere.SetRadius(0.3)
+        assembly.AddPart(actor_for(mapper_for(sphere)))
+    assembly.SetPosition(0.0, 0.9, 0.0)
+    return [assembly]
+
+
+def case_axes():
+    """vtkAxesActor draws its shafts and tips without handing on its keys."""
+    axes = vtkAxesActor()
+    axes.SetTotalLength(0.9, 0.9, 0.9)
+    axes.SetShaftTypeToCylinder()
+    axes.SetCylinderRadius(0.06)
+    axes.SetConeRadius(0.3)
+    axes.AxisLabelsOff()
+    axes.SetPosition(-0.3, 0.6, 0.0)
+    return [axes]
 
 
 def case_molecule():
@@ -266,6 +324,15 @@ def case_light_actor():
     return ["light actor"]
 
 
+def shade():
+    """A plate high above, between the actors and the light, out of view."""
+    plate = vtkPlaneSource()
+    plate.SetOrigin(-0.3, 3.0, 1.1)
+    plate.SetPoint1(0.9, 3.0, 1.1)
+    plate.SetPoint2(-0.3, 3.0, -0.1)
+    return actor_for(mapper_for(plate))
+
+
 # Translucent actors are drawn and receive shadows but cast none, as in VTK.
 TRANSLUCENT = {"casts": False}
 PEELED = {"casts": False, "peeling": True}
@@ -276,7 +343,8 @@ CASES = [
     ("points", lambda: case_representation(
         lambda p: (p.SetRepresentationToPoints(), p.SetPointSize(4)))),
     ("edges", case_edges),
-    ("polylines", case_polylines),
+    # VTK lights lines only with normals: these are drawn unlit, shadow or not.
+    ("polylines", case_polylines, {"receives": False}),
     ("lines as tubes", lambda: case_representation(
         lambda p: (p.SetRepresentationToWireframe(), p.RenderLinesAsTubesOn(),
                    p.SetLineWidth(4)))),
@@ -284,8 +352,11 @@ CASES = [
         lambda p: (p.SetRepresentationToPoints(), p.RenderPointsAsSpheresOn(),
                    p.SetPointSize(6)))),
     ("sphere imposters", case_sphere_imposters),
+    ("stick imposters", case_stick_imposters),
     ("molecule (sphere and stick imposters)", case_molecule),
     ("composite", case_composite),
+    ("assembly", case_assembly),
+    ("axes actor", case_axes),
     ("glyphs", case_glyphs),
     ("textured", case_textured),
     ("scalar colours", case_scalars),
@@ -293,14 +364,16 @@ CASES = [
     ("translucent", case_translucent, TRANSLUCENT),
     ("translucent, depth peeling", case_translucent, PEELED),
     # Drawn as plain VTK draws them; whether they cast is not asked here.
-    ("text (2D)", case_text, {"casts": None}),
-    ("image slice", case_image_slice, {"casts": None}),
-    ("volume", case_volume, {"casts": None, "warns": "vtkOpenGLGPUVolumeRayCastMapper"}),
+    ("text (2D)", case_text, {"casts": None, "receives": False}),
+    ("image slice", case_image_slice, {"casts": None, "receives": False}),
+    ("volume", case_volume,
+     {"casts": None, "receives": False, "warns": "vtkOpenGLGPUVolumeRayCastMapper"}),
     # A picture of the light: drawn as plain VTK draws it, and casting nothing.
     # The same, in a viewport off the window's corner beside another renderer.
     ("surface, in a viewport", case_surface, {"viewport": (0.25, 0.1, 1.0, 0.95)}),
     ("light actor", case_light_actor,
-     {"casts": False, "unlit": True, "view": ((5.0, 3.5, 6.0), (0.3, 2.0, 0.5))}),
+     {"casts": False, "receives": None, "unlit": True,
+      "view": ((5.0, 3.5, 6.0), (0.3, 2.0, 0.5))}),
 ]
 
 
@@ -460,8 +533,24 @@ for case, build, *options in CASES:
             failures.append("%s: VTK reported %d error(s), the first: %s"
                             % (label, len(errors), errors[0].strip()[:300]))
             errors.clear()
-        print("%-40s %-9s actor median diff %4.1f, %3.0f%% darkened; floor shadow %4d px"
-              % (case, name, np.median(difference), 100 * darkened, shadow.sum()))
+        # Receives: under the plate, lit pixels go dark (VTK's light has no
+        # ambient part here), unlit ones stay.
+        receives = options.get("receives", True)
+        if receives is not None:
+            under = brightness(render(build() + [shade()], name, peeling, view, viewport))
+            warnings.clear()  # the same as above, from a new pass
+            kept = np.median(under[lit_actor] / plain[lit_actor])
+            if (receives and kept > 0.3) or (not receives and kept < 0.9):
+                failures.append("%s: under a plate, its lit pixels keep %.0f%% of their "
+                                "brightness (expected %s)" % (label, 100 * kept,
+                                                              "dark" if receives else "as is"))
+            if errors:
+                failures.append("%s, under a plate: VTK reported %d error(s), the first: %s"
+                                % (label, len(errors), errors[0].strip()[:300]))
+                errors.clear()
+        print("%-40s %-9s actor median diff %4.1f, %3.0f%% darkened; floor shadow %4d px; "
+              "under a plate %s" % (case, name, np.median(difference), 100 * darkened,
+                                    shadow.sum(), "-" if receives is None else "%.2f" % kept))
 
 if failures:
     print("\n".join("FAIL: " + f for f in failures))
