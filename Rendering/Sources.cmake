@@ -4,6 +4,7 @@ set(softshadows_rendering_classes
   vtkContactHardeningShadowPass
   vtkHardShadowPass
   vtkOmnidirectionalShadowPass
+  vtkRayCastLightVisibility
   vtkReferenceShadowPass
   vtkSoftShadowPass)
 

@@ -30,7 +30,8 @@ vtk_module_add_module(VTK::RenderingSoftShadows
 vtk_module_include(VTK::RenderingSoftShadows PRIVATE Module Rendering)
 vtk_module_find_package(PACKAGE glm)
 vtk_module_find_package(PACKAGE OpenMesh)
-vtk_module_link(VTK::RenderingSoftShadows PRIVATE glm::glm OpenMeshCore)
+vtk_module_find_package(PACKAGE embree VERSION 3)
+vtk_module_link(VTK::RenderingSoftShadows PRIVATE glm::glm OpenMeshCore embree)
 if (CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
   # Brute-force and tree silhouette searches must agree bit for bit.
   vtk_module_compile_options(VTK::RenderingSoftShadows PRIVATE -ffp-contract=off)

@@ -9,7 +9,7 @@
 SOFTSHADOWS_PACKAGES=(
   cmake g++ make
   libvtk9-dev python3-vtk9
-  libglm-dev libopenmesh-dev nlohmann-json3-dev
+  libglm-dev libopenmesh-dev nlohmann-json3-dev libembree-dev
   xvfb xauth
 )
 

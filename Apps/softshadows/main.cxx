@@ -4,6 +4,7 @@
 #include "Benchmark.h"
 #include "CommandLine.h"
 #include "Images.h"
+#include "Quality.h"
 #include "SceneBuilder.h"
 #include "SceneFile.h"
 #include "Techniques.h"
@@ -19,6 +20,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <limits>
@@ -37,6 +39,10 @@ const char* const Usage =
   softshadows bench SCENE.json --techniques SPEC,SPEC,... [--size WxH] [--frames N] [--json]
   softshadows gallery SCENE.json --techniques SPEC,SPEC,... --output-dir DIR
                      [--size WxH] [--frames N]
+  softshadows truth SCENE.json [--size WxH] [--output FILE] [--light I]
+                    [--samples N] [--mask FILE]
+  softshadows quality SCENE.json --techniques SPEC,SPEC,... [--size WxH]
+                      [--light I] [--samples N] [--json]
 
 A technique SPEC is name[:variant]; `softshadows techniques` lists them with
 their parameters. Rendering needs an X display: run under `xvfb-run -a`.
@@ -51,6 +57,12 @@ their parameters. Rendering needs an X display: run under `xvfb-run -a`.
                object per technique and line
   gallery      render each technique to DIR/<technique>.png, all of them side by
                side, labelled, to DIR/gallery.png, and print their timings
+  truth        the ground truth of light I's visibility by ray casting (N rays
+               a pixel, default 256; no display needed), written as
+               --shadow-only writes a frame (default <scene name>-truth.png);
+               --mask writes the pixels quality is measured on
+  quality      each technique's shadow-only frame against the truth: RMSE and
+               the share of pixels more than 0.1 off, over those pixels
 )";
 
 // Frames a technique draws, untimed, before `bench` and `gallery` time it:
@@ -304,6 +316,93 @@ int Gallery(const std::vector<std::string>& arguments)
   return 0;
 }
 
+/// Light I of the scene (--light), checked against its lights.
+int LightOption(const CommandLine& line, const Scene& scene)
+{
+  const int light = line.Integer("--light", 0, std::numeric_limits<int>::max(), 0);
+  if (light >= static_cast<int>(scene.Lights.size()))
+  {
+    throw InputError("--light",
+      "the scene has " + std::to_string(scene.Lights.size()) + " light(s); got index " +
+        std::to_string(light));
+  }
+  return light;
+}
+
+int Truth(const std::vector<std::string>& arguments)
+{
+  CommandLine line(
+    "truth", arguments, true, { "--size", "--output", "--light", "--samples", "--mask" }, {});
+  const std::array<int, 2> size = line.Size();
+  const int samples = line.Integer("--samples", 1, 65536, 256);
+  Session session(line, {});
+  const Scene& scene = session.Description;
+  const int light = LightOption(line, scene);
+  vtkSmartPointer<vtkImageData> truth =
+    CastTruth(session.Renderer, size[0] > 0 ? size : scene.Size, light, samples);
+  const std::filesystem::path output = line.Has("--output")
+    ? std::filesystem::path(line.Value("--output"))
+    : std::filesystem::path(FileNameOf(scene.Name) + "-truth.png");
+  WritePNG(TruthImage(truth), output);
+  std::cout << "wrote " << output.string() << "\n";
+  if (line.Has("--mask"))
+  {
+    WritePNG(MaskImage(truth), line.Value("--mask"));
+    std::cout << "wrote " << line.Value("--mask") << "\n";
+  }
+  return 0;
+}
+
+int Quality(const std::vector<std::string>& arguments)
+{
+  CommandLine line(
+    "quality", arguments, true, { "--techniques", "--size", "--light", "--samples" }, { "--json" });
+  const std::vector<TechniqueSpec> specs = line.TechniqueList("--techniques");
+  const int samples = line.Integer("--samples", 1, 65536, 256);
+  Session session(line, specs);
+  const Scene& scene = session.Description;
+  const int light = LightOption(line, scene);
+  for (const TechniqueInstance& technique : session.Techniques)
+  {
+    if (!technique.Shadows)
+    {
+      throw InputError("--techniques",
+        "technique '" + technique.Spec + "' (VTK's vtkShadowMapPass) has no shadow-only output");
+    }
+    technique.Shadows->SetShadowOnlyLight(light);
+  }
+  const std::array<int, 2> pixels = line.Size()[0] > 0 ? line.Size() : scene.Size;
+  vtkSmartPointer<vtkImageData> truth = CastTruth(session.Renderer, pixels, light, samples);
+  session.Renderer->SetBackground(0.0, 0.0, 0.0);
+  session.Renderer->SetBackgroundAlpha(0.0);
+  vtkRenderWindow* window = session.OpenWindow(pixels, true);
+  const bool json = line.Has("--json");
+  if (!json)
+  {
+    std::cout << "against the ray-cast truth (" << samples << " rays a pixel), " << pixels[0] << "x"
+              << pixels[1] << ", light " << light << ":\n";
+    std::printf("%-24s %8s %9s %8s\n", "technique", "RMSE", "mismatch", "pixels");
+  }
+  for (const TechniqueInstance& technique : session.Techniques)
+  {
+    session.Render(technique);
+    const QualityFigures figures = CompareWithTruth(CaptureWindow(window, true), truth);
+    if (json)
+    {
+      std::printf("{\"technique\": \"%s\", \"rmse\": %.5f, \"mismatch\": %.5f, "
+                  "\"pixels\": %ld, \"samples\": %d, \"size\": [%d, %d]}\n",
+        technique.Spec.c_str(), figures.RMSE, figures.Mismatch, figures.Pixels, samples, pixels[0],
+        pixels[1]);
+    }
+    else
+    {
+      std::printf("%-24s %8.4f %8.1f%% %8ld\n", technique.Spec.c_str(), figures.RMSE,
+        100.0 * figures.Mismatch, figures.Pixels);
+    }
+  }
+  return 0;
+}
+
 int Run(const std::vector<std::string>& arguments)
 {
   if (arguments.empty())
@@ -334,7 +433,16 @@ int Run(const std::vector<std::string>& arguments)
   {
     return Gallery(rest);
   }
-  throw InputError(command, "unknown command (known: techniques, render, bench, gallery, help)");
+  if (command == "truth")
+  {
+    return Truth(rest);
+  }
+  if (command == "quality")
+  {
+    return Quality(rest);
+  }
+  throw InputError(
+    command, "unknown command (known: techniques, render, bench, gallery, truth, quality, help)");
 }
 }
 

@@ -328,3 +328,61 @@ def interior(mask, margin):
         for dx in range(-margin, margin + 1):
             result &= np.roll(np.roll(mask, dy, axis=0), dx, axis=1)
     return result
+
+
+def truth(scene, light=0, samples=256):
+    """The ray-cast ground truth (`softshadows truth`): (visibility in
+    [0,1], geometry, SPEC's quality mask), each [rows, columns]."""
+    with tempfile.TemporaryDirectory() as folder:
+        scene_file = os.path.join(folder, "scene.json")
+        with open(scene_file, "w") as f:
+            json.dump(scene, f)
+        output = os.path.join(folder, "truth.png")
+        mask = os.path.join(folder, "mask.png")
+        run(["truth", scene_file, "--output", output, "--mask", mask, "--light", str(light),
+             "--samples", str(samples)])
+        pixels = read_png(output)
+        measured = read_png(mask)[:, :, 0] == 255
+    return pixels[:, :, 0] / 255.0, pixels[:, :, 1] == 255, measured
+
+
+def disc_overlap(r1, r2, d):
+    """Area where two discs of radii r1, r2 with centres d apart overlap."""
+    r1, r2, d = np.broadcast_arrays(np.asarray(r1, float), np.asarray(r2, float),
+                                    np.asarray(d, float))
+    small = np.minimum(r1, r2)
+    area = np.where(d <= np.abs(r1 - r2), math.pi * small * small, 0.0)
+    lens = (d < r1 + r2) & (d > np.abs(r1 - r2))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        a1 = np.arccos(np.clip((d * d + r1 * r1 - r2 * r2) / (2 * d * r1), -1, 1))
+        a2 = np.arccos(np.clip((d * d + r2 * r2 - r1 * r1) / (2 * d * r2), -1, 1))
+        k = np.sqrt(np.maximum((-d + r1 + r2) * (d + r1 - r2) * (d - r1 + r2) * (d + r1 + r2), 0))
+        lens_area = r1 * r1 * a1 + r2 * r2 * a2 - 0.5 * k
+    return np.where(lens, lens_area, area)
+
+
+def ball_visibility(scene):
+    """Closed form of the ball scene's ground visibility: the share of the
+    light's disc, as seen from each ground point, that the ball's disc does
+    not cover (angular radii; the small-angle plane of directions).
+    Spot and point lights: a sphere of `radius`; directional: a cone of
+    that many degrees around `direction`."""
+    points, visible, _ = ground_points(scene)
+    ball = np.array(scene["actors"][1]["position"], float)
+    light = scene["lights"][0]
+    to_ball = ball - points
+    ball_distance = np.linalg.norm(to_ball, axis=-1)
+    beta = np.arcsin(BALL_RADIUS / ball_distance)
+    if light["type"] == "directional":
+        to_light = -np.array(light["direction"], float)
+        to_light = np.broadcast_to(to_light / np.linalg.norm(to_light), points.shape)
+        alpha = np.full(points.shape[:2], math.radians(light["radius"]))
+    else:
+        to_light = np.array(light["position"], float) - points
+        distance = np.linalg.norm(to_light, axis=-1)
+        alpha = np.arcsin(light["radius"] / distance)
+        to_light = to_light / distance[..., None]
+    cosine = np.sum(to_light * to_ball, axis=-1) / ball_distance
+    gamma = np.arccos(np.clip(cosine, -1.0, 1.0))
+    covered = disc_overlap(alpha, beta, gamma) / (math.pi * alpha * alpha)
+    return 1.0 - np.clip(covered, 0.0, 1.0), visible

@@ -1,0 +1,111 @@
+#include "Quality.h"
+
+#include "MessageCapture.h"
+
+#include "vtkRayCastLightVisibility.h"
+
+#include <vtkDataArray.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace softshadows
+{
+namespace
+{
+vtkSmartPointer<vtkImageData> Image8(vtkImageData* like, int components)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetExtent(like->GetExtent());
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, components);
+  return image;
+}
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkImageData> CastTruth(
+  vtkRenderer* renderer, const std::array<int, 2>& size, int light, int samples)
+{
+  vtkNew<vtkRayCastLightVisibility> caster;
+  caster->SetRenderer(renderer);
+  caster->SetSize(size[0], size[1]);
+  caster->SetLightIndex(light);
+  caster->SetSamples(samples);
+  MessageCapture messages;
+  caster->Update();
+  if (messages.HasError())
+  {
+    throw std::runtime_error("ray casting failed: " + messages.FirstMessage());
+  }
+  auto truth = vtkSmartPointer<vtkImageData>::New();
+  truth->ShallowCopy(caster->GetOutput());
+  return truth;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkImageData> TruthImage(vtkImageData* truth)
+{
+  vtkSmartPointer<vtkImageData> image = Image8(truth, 2);
+  vtkDataArray* visibility = truth->GetPointData()->GetArray("Visibility");
+  vtkDataArray* geometry = truth->GetPointData()->GetArray("Geometry");
+  auto* out = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (vtkIdType i = 0; i < visibility->GetNumberOfTuples(); ++i)
+  {
+    const bool seen = geometry->GetTuple1(i) > 0.0;
+    out[2 * i] =
+      seen ? static_cast<unsigned char>(std::lround(255.0 * visibility->GetTuple1(i))) : 0;
+    out[2 * i + 1] = seen ? 255 : 0;
+  }
+  return image;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkImageData> MaskImage(vtkImageData* truth)
+{
+  vtkSmartPointer<vtkImageData> image = Image8(truth, 1);
+  vtkDataArray* mask = truth->GetPointData()->GetArray("QualityMask");
+  auto* out = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (vtkIdType i = 0; i < mask->GetNumberOfTuples(); ++i)
+  {
+    out[i] = mask->GetTuple1(i) > 0.0 ? 255 : 0;
+  }
+  return image;
+}
+
+//------------------------------------------------------------------------------
+QualityFigures CompareWithTruth(vtkImageData* shadowOnly, vtkImageData* truth)
+{
+  vtkDataArray* visibility = truth->GetPointData()->GetArray("Visibility");
+  vtkDataArray* mask = truth->GetPointData()->GetArray("QualityMask");
+  vtkDataArray* frame = shadowOnly->GetPointData()->GetScalars();
+  if (frame->GetNumberOfTuples() != visibility->GetNumberOfTuples())
+  {
+    throw std::logic_error("the frame and the truth differ in size");
+  }
+  QualityFigures figures;
+  double squares = 0.0;
+  long off = 0;
+  for (vtkIdType i = 0; i < visibility->GetNumberOfTuples(); ++i)
+  {
+    if (mask->GetTuple1(i) <= 0.0)
+    {
+      continue;
+    }
+    const double error = frame->GetComponent(i, 0) / 255.0 - visibility->GetTuple1(i);
+    squares += error * error;
+    off += std::abs(error) > MismatchTolerance ? 1 : 0;
+    ++figures.Pixels;
+  }
+  if (figures.Pixels > 0)
+  {
+    figures.RMSE = std::sqrt(squares / static_cast<double>(figures.Pixels));
+    figures.Mismatch = static_cast<double>(off) / static_cast<double>(figures.Pixels);
+  }
+  return figures;
+}
+}

@@ -1,0 +1,43 @@
+/**
+ * Quality against physics: the ray-cast truth of a scene's light visibility
+ * (vtkRayCastLightVisibility), its images, and how far a technique's
+ * shadow-only frame is from it (docs/quality.md).
+ */
+
+#ifndef softshadows_Quality_h
+#define softshadows_Quality_h
+
+#include <vtkSmartPointer.h>
+
+#include <array>
+
+class vtkImageData;
+class vtkRenderer;
+
+namespace softshadows
+{
+/// The truth for light `light` of `renderer`, at `size` pixels.
+vtkSmartPointer<vtkImageData> CastTruth(
+  vtkRenderer* renderer, const std::array<int, 2>& size, int light, int samples);
+
+/// The truth as `render --shadow-only` writes a frame: grey visibility, alpha coverage.
+vtkSmartPointer<vtkImageData> TruthImage(vtkImageData* truth);
+
+/// The pixels quality is measured on, grey: 255 measured, 0 not.
+vtkSmartPointer<vtkImageData> MaskImage(vtkImageData* truth);
+
+struct QualityFigures
+{
+  double RMSE = 0.0;     ///< of visibility, over the mask
+  double Mismatch = 0.0; ///< share of the mask's pixels more than MismatchTolerance off
+  long Pixels = 0;       ///< in the mask
+};
+
+/// A visible error: a tenth of the way between lit and umbra.
+constexpr double MismatchTolerance = 0.1;
+
+/// A shadow-only RGBA capture (visibility in red) against the truth.
+QualityFigures CompareWithTruth(vtkImageData* shadowOnly, vtkImageData* truth);
+}
+
+#endif
