@@ -5,16 +5,22 @@
 #include <vtkConeSource.h>
 #include <vtkCubeSource.h>
 #include <vtkCylinderSource.h>
+#include <vtkMath.h>
 #include <vtkNew.h>
 #include <vtkParametricFunctionSource.h>
 #include <vtkParametricTorus.h>
 #include <vtkPlaneSource.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkPolyDataNormals.h>
 #include <vtkSphereSource.h>
 #include <vtkTransform.h>
 #include <vtkTransformPolyDataFilter.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <random>
 
 namespace softshadows
 {
@@ -117,6 +123,55 @@ vtkSmartPointer<vtkPolyData> MakeFence(const Json& p)
   return Output(fence);
 }
 
+// A sphere whose radius a sum of `waves` plane waves of frequency
+// `frequency` (cycles across the unit sphere's diameter) in random directions
+// and phases modulates by up to `bumps` times the radius: a lumpy, organic
+// shape whose folds shadow each other. The same seed, the same shape.
+vtkSmartPointer<vtkPolyData> MakeBlob(const Json& p)
+{
+  const int resolution = p["resolution"].get<int>();
+  const double radius = p["radius"].get<double>();
+  const double bumps = p["bumps"].get<double>();
+  const double frequency = p["frequency"].get<double>();
+  constexpr int Waves = 8;
+  std::mt19937 random(p["seed"].get<unsigned int>());
+  std::normal_distribution<double> gaussian;
+  std::uniform_real_distribution<double> uniform(0.0, 2.0 * vtkMath::Pi());
+  std::array<std::array<double, 4>, Waves> waves{}; // direction, phase
+  for (auto& wave : waves)
+  {
+    double direction[3] = { gaussian(random), gaussian(random), gaussian(random) };
+    vtkMath::Normalize(direction);
+    wave = { direction[0], direction[1], direction[2], uniform(random) };
+  }
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetRadius(1.0);
+  sphere->SetThetaResolution(resolution);
+  sphere->SetPhiResolution(Across(resolution));
+  sphere->Update();
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->CopyStructure(sphere->GetOutput());
+  vtkNew<vtkPoints> points;
+  points->DeepCopy(sphere->GetOutput()->GetPoints());
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    points->GetPoint(i, x);
+    double sum = 0.0;
+    for (const auto& wave : waves)
+    {
+      sum += std::sin(vtkMath::Pi() * frequency * vtkMath::Dot(x, wave.data()) + wave[3]);
+    }
+    const double scale = radius * (1.0 + bumps * sum / std::sqrt(static_cast<double>(Waves)));
+    points->SetPoint(i, scale * x[0], scale * x[1], scale * x[2]);
+  }
+  mesh->SetPoints(points);
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputData(mesh);
+  normals->SplittingOff();
+  return Output(normals);
+}
+
 const Range Segments = Range::Between(3, 1024);
 }
 
@@ -179,6 +234,18 @@ const std::vector<Source>& Sources()
           "depth of a picket or rail along z" },
       },
       MakeFence },
+    { "blob", "a lumpy sphere centred on the origin, its folds shadowing each other",
+      {
+        { "radius", ValueType::Number, Range::Positive(), 0.5, "radius before the bumps" },
+        { "bumps", ValueType::Number, Range::Between(0.0, 0.5), 0.2,
+          "typical height of a bump, as a share of the radius" },
+        { "frequency", ValueType::Number, Range::Positive(), 3.0,
+          "bumps across the diameter" },
+        { "seed", ValueType::Integer, Range::Between(0, 1000000), 1, "which blob" },
+        { "resolution", ValueType::Integer, Segments, 128,
+          "segments around the vertical axis (half as many from pole to pole)" },
+      },
+      MakeBlob },
   };
   return sources;
 }
