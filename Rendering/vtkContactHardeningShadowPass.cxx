@@ -45,14 +45,18 @@ constexpr int MaximumTaps = 64;
 constexpr int TileSize = 8;
 
 // Taps (x, y in [-1,1], weight) with x and y scaled to a kernel `size`
-// pixels wide and rounded to whole pixels, as the shaders fetch them.
-std::vector<float> ScaledTaps(const std::vector<float>& taps, int size)
+// pixels wide and, when `round`, rounded to whole pixels as the shaders
+// fetch them (floor(x + 0.5)).
+std::vector<float> ScaledTaps(const std::vector<float>& taps, int size, bool round = true)
 {
   std::vector<float> scaled(taps);
   for (size_t i = 0; i + 2 < scaled.size(); i += 3)
   {
-    scaled[i] = std::round(scaled[i] * 0.5f * static_cast<float>(size));
-    scaled[i + 1] = std::round(scaled[i + 1] * 0.5f * static_cast<float>(size));
+    for (size_t k = i; k < i + 2; ++k)
+    {
+      scaled[k] *= 0.5f * static_cast<float>(size);
+      scaled[k] = round ? std::floor(scaled[k] + 0.5f) : scaled[k];
+    }
   }
   return scaled;
 }
@@ -66,8 +70,10 @@ public:
   unsigned int Queries[2] = { 0, 0 }; // did the last blur pass draw any pixel?
   size_t CameraPassFirst = 0;         // the first light the camera pass draws
   std::vector<int> CameraPassUnits;   // texture units of its lights' maps
-  std::vector<float> PassMidpoints;   // see vtkContactPassesFor() in vtkContactDistanceFS.glsl
-  std::vector<float> FrameTaps;       // this frame's Taps(PoissonTaps)
+  // See vtkContactPassesFor() in vtkContactDistanceFS.glsl.
+  std::vector<float> PassStarts;           // variance before each pass
+  std::vector<float> PassInverseVariances; // 1 / each pass's variance
+  std::vector<float> FrameTaps;            // this frame's Taps(PoissonTaps)
   bool Unsupported = false;
   // Section 3.1: up to 64 Poisson-disk points in [-1,1]^2, the first at the
   // origin.
@@ -75,9 +81,8 @@ public:
 
   /// Offsets and normalised Gaussian weights of the first `count` points,
   /// with sigma = size / 3 for offsets scaled by size / 2 (the weights do not
-  /// depend on the size); and the per-axis variance of that kernel per
-  /// pixel^2 of size^2.
-  std::vector<float> Taps(int count, float& variance) const
+  /// depend on the size).
+  std::vector<float> Taps(int count) const
   {
     std::vector<float> taps;
     float total = 0.0f;
@@ -88,11 +93,9 @@ public:
       taps.insert(taps.end(), { this->Poisson[i].x, this->Poisson[i].y, w });
       total += w;
     }
-    variance = 0.0f;
     for (int i = 0; i < count; ++i)
     {
       taps[3 * i + 2] /= total;
-      variance += taps[3 * i + 2] * 0.25f * 0.5f * glm::dot(this->Poisson[i], this->Poisson[i]);
     }
     return taps;
   }
@@ -196,18 +199,24 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
     this->Screen->ReleaseTexture("contact.filter1");
   }
 
-  // Blur variances add: where the variance of k + 1 passes becomes closer to
-  // a penumbra's than that of k passes.
-  float kernelVariance = 0.0f;
-  in.FrameTaps = in.Taps(this->PoissonTaps, kernelVariance);
-  in.PassMidpoints.clear();
+  // Blur variances add: the variance before each pass, and each pass's, of
+  // the taps as the pass fetches them (whole pixels).
+  in.FrameTaps = in.Taps(this->PoissonTaps);
+  in.PassStarts.clear();
+  in.PassInverseVariances.clear();
   float variance = 0.0f;
   for (int pass = 0; pass < this->PassLimit; ++pass)
   {
-    const float size = static_cast<float>(this->KernelSize(pass));
-    const float next = variance + kernelVariance * size * size;
-    in.PassMidpoints.push_back(0.5f * (variance + next));
-    variance = next;
+    const std::vector<float> taps = ScaledTaps(in.FrameTaps, this->KernelSize(pass));
+    float own = 0.0f; // per axis
+    for (size_t i = 0; i + 2 < taps.size(); i += 3)
+    {
+      own += taps[i + 2] * 0.5f * (taps[i] * taps[i] + taps[i + 1] * taps[i + 1]);
+    }
+    own = std::max(own, 1.0e-3f);
+    in.PassStarts.push_back(variance);
+    in.PassInverseVariances.push_back(1.0f / own);
+    variance += own;
   }
 
   // Pass 2 for as many lights at a time as a pass has colour targets, drawn
@@ -292,13 +301,18 @@ std::string vtkContactHardeningShadowPass::GetCameraPassDeclarations()
   if (this->UseLightSize && this->Variant == MultiPass)
   {
     // Exact: 9 significant digits round-trip a float.
-    dec << "const float contactPassMidpoints[" << in.PassMidpoints.size() << "] = float[](";
     dec << std::scientific << std::setprecision(9);
-    for (size_t k = 0; k < in.PassMidpoints.size(); ++k)
+    auto constants = [&](const char* name, const std::vector<float>& values)
     {
-      dec << (k > 0 ? ", " : "") << in.PassMidpoints[k];
-    }
-    dec << ");\n";
+      dec << "const float " << name << "[" << values.size() << "] = float[](";
+      for (size_t k = 0; k < values.size(); ++k)
+      {
+        dec << (k > 0 ? ", " : "") << values[k];
+      }
+      dec << ");\n";
+    };
+    constants("contactPassStarts", in.PassStarts);
+    constants("contactPassInverseVariances", in.PassInverseVariances);
   }
   dec << vtkShadowNormalOffsetFS << "\n"
       << vtkShadowCubeLookupFS << "\n"
@@ -459,6 +473,8 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
       program->SetUniformi("contactTileSize", TileSize);
       program->SetUniformi("contactEarlyOut", this->UmbraEarlyOut ? 1 : 0);
       program->SetUniformi("contactDilation", this->Dilation ? 1 : 0);
+      // D counts passes (a fraction blends the last in) or kernel pixels.
+      program->SetUniformf("contactSmallestD", this->Variant == MultiPass ? 0.01f : 1.5f);
       const std::vector<float> dilationTaps = ScaledTaps(taps, this->DilationSize);
       program->SetUniform3fv("contactTaps", this->PoissonTaps, dilationTaps.data());
       program->SetUniformi("contactTapCount", this->PoissonTaps);
@@ -494,7 +510,8 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
         screen, in.MultiPass, pair[pass % 2],
         [&](vtkShaderProgram* program)
         {
-          const std::vector<float> passTaps = ScaledTaps(taps, size);
+          // Unrounded: the shader scales and rounds them.
+          const std::vector<float> passTaps = ScaledTaps(taps, size, false);
           program->SetUniform3fv("contactTaps", this->PoissonTaps, passTaps.data());
           program->SetUniformi("contactTapCount", this->PoissonTaps);
         },

@@ -53,24 +53,27 @@ float vtkContactLightDistance(int k, float depth, bool perspective)
 }
 
 #if CONTACT_LIGHT_SIZE && CONTACT_COUNT_PASSES
-// contactPassMidpoints[CONTACT_PASS_LIMIT], declared before this file as constants
-// (llvmpipe reloads a uniform at every compare; against immediates the
-// count costs a sixth as much): the variance (pixels^2) halfway between that
-// of k and of k + 1 blurs (blur variances add).
+// contactPassStarts[CONTACT_PASS_LIMIT] and
+// contactPassInverseVariances[CONTACT_PASS_LIMIT], declared before this file
+// as constants (llvmpipe reloads a uniform at every use; immediates cost a
+// sixth as much): the variance (pixels^2) before pass k, and 1 / pass k's.
 
-// The number of blur passes whose summed variance comes closest to that of a
-// Gaussian of full width `width` (about 4 sigma, 2% to 98%): none for edges
-// under about a pixel and a half, which stay hard. Counted without a branch
-// (the sums grow with k).
+// The blur passes whose summed variance (blur variances add) equals that of
+// a Gaussian of full width `width` (about 4 sigma, 2% to 98%), a fraction
+// counting for the last: a pass blended in by t adds t times its variance
+// (vtkContactMultiPassFS.glsl), so that D follows the width smoothly.
+// None for edges under a pixel and a half: there the receivers' own
+// full-resolution hard edge is closer than any blur of these buffers.
+// Counted without a branch.
 float vtkContactPassesFor(float width)
 {
   float target = 0.0625 * width * width;
   float passes = 0.0;
   for (int k = 0; k < CONTACT_PASS_LIMIT; ++k)
   {
-    passes += contactPassMidpoints[k] < target ? 1.0 : 0.0;
+    passes += clamp((target - contactPassStarts[k]) * contactPassInverseVariances[k], 0.0, 1.0);
   }
-  return passes;
+  return width >= 1.5 ? passes : 0.0;
 }
 #endif
 

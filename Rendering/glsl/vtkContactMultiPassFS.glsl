@@ -1,12 +1,13 @@
 // Pass 4, multi-pass variant: one Poisson-disk Gaussian blur of the
 // visibility over a kernel of `kernelSize` pixels (sigma = size / 3, weights
-// normalised), for pixels whose D is still positive; D drops by one. Only
+// normalised), for pixels whose D is still positive, the kernel shrunk where
+// D < 1; D drops by one. Only
 // pixels the prepare pass selected for this pass are drawn (depth mask):
 // those still blurring, and those whose D ran out in the pass before, copied
 // so that both ping-pong buffers agree on them from then on. Each also
 // writes its code into the receivers' texture.
 // Uses: vtkShadowScreenCommonFS.glsl, vtkContactCommonFS.glsl.
-uniform vec3 contactTaps[64]; // offsets in pixels for this pass's kernel, and weights
+uniform vec3 contactTaps[64]; // offsets in pixels (not rounded) for this pass's kernel, and weights
 uniform int contactTapCount;
 
 void main()
@@ -16,12 +17,16 @@ void main()
   vec4 texel = c;
   if (c.a > 0.0)
   {
+    // The last pass of a fractional D < 1 shrinks its kernel by sqrt(D),
+    // so that it adds D times its variance: blending the whole blur in by D
+    // instead would keep 1 - D of the sharp edge.
+    float scale = sqrt(min(c.a, 1.0));
     // Tap 0 lies at the origin: this pixel.
     float sum = contactTaps[0].z * c.r;
     float weights = contactTaps[0].z;
     for (int i = 1; i < contactTapCount; ++i)
     {
-      vec4 t = vtkContactFetch(pixel + ivec2(contactTaps[i].xy));
+      vec4 t = vtkContactFetch(pixel + ivec2(floor(contactTaps[i].xy * scale + 0.5)));
       if (vtkContactSameSurface(c, t))
       {
         sum += contactTaps[i].z * t.r;

@@ -17,6 +17,7 @@ uniform vec3 contactTaps[64]; // offsets in pixels over the dilation kernel, and
 uniform int contactTapCount;
 uniform sampler2D contactTiles;
 uniform int contactTileSize;
+uniform float contactSmallestD;
 
 void main()
 {
@@ -47,9 +48,10 @@ void main()
     }
     d = weights > 0.0 ? sum / weights : 0.0;
   }
-  // Below one (a pass, a pixel) a blur changes nothing worth the pixel's
-  // sharper full-resolution hard shadow in the receivers.
-  d = d >= 1.0 ? d : 0.0;
+  // Below contactSmallestD (a pixel for kernels, a tenth of a pass) a blur
+  // changes nothing worth the pixel's sharper full-resolution hard shadow in
+  // the receivers.
+  d = d >= contactSmallestD ? d : 0.0;
   vec4 texel = vec4(c.r, d > 0.0 ? 1.0 : 0.0, c.b, d);
   gl_FragData[0] = texel;
   gl_FragData[1] = vec4(vtkShadowPackTexel(texel));
