@@ -201,9 +201,9 @@ const std::vector<Technique>& Techniques()
     { "contact",
       "vtkContactHardeningShadowPass: contact-hardening soft shadows in screen space (Cherry & "
       "Kooima): a distance map of S and D, then S softened with a D-sized filter",
-      { { "multipass", "up to pass_limit Poisson-disk Gaussian blurs, D counting them down" },
-        { "pcf", "one box filter of D pixels" },
-        { "gaussian", "one separable Gaussian blur of D pixels" } },
+      { { "pcf", "one box filter of D pixels" },
+        { "gaussian", "one separable Gaussian blur of D pixels" },
+        { "multipass", "up to pass_limit Poisson-disk Gaussian blurs, D counting them down" } },
       WithCommonParameters({
         Bind<vtkContactHardeningShadowPass, bool>("use_light_size", ValueType::Boolean,
           Range::Any(),
@@ -267,9 +267,9 @@ const std::vector<Technique>& Techniques()
       [](const std::string& variant)
       {
         auto pass = vtkSmartPointer<vtkContactHardeningShadowPass>::New();
-        if (variant == "pcf")
+        if (variant == "multipass")
         {
-          pass->SetVariantToPCF();
+          pass->SetVariantToMultiPass();
         }
         else if (variant == "gaussian")
         {
@@ -277,7 +277,7 @@ const std::vector<Technique>& Techniques()
         }
         else
         {
-          pass->SetVariantToMultiPass();
+          pass->SetVariantToPCF();
         }
         return Wrap(pass);
       } },
