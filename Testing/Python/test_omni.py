@@ -1,7 +1,7 @@
 """The `omni` technique: point lights' cube maps (Gerasimov, GPU Gems ch. 12)
 softened by a Poisson-disk filter sized from the light's radius. Its
-penumbra widens with the occluder's height and it is closer to the
-reference than hard shadows; the chapter's 4-tap PCF sits in between."""
+penumbra widens with the occluder's height and it is closer to the ray-cast
+truth than hard shadows; the chapter's 4-tap PCF sits in between."""
 import numpy as np
 
 import shadowtest as st
@@ -16,15 +16,13 @@ for height in (0.75, 1.5, 2.25):
 st.check(widths[0] < widths[1] < widths[2],
          "omni penumbra widens as the ball rises: %s" % np.round(widths, 3).tolist())
 
-scene = st.ball_scene(height=1.5, light_radius=radius, technique="reference",
-                      params={"samples": 64}, map_size=512, light_type="point")
-reference, _ = st.shadow_only(scene)
-mask = st.quality_mask(scene)
+scene = st.ball_scene(height=1.5, light_radius=radius, map_size=512, light_type="point")
+truth, _, mask = st.truth(scene)
 errors = {}
 for technique in ("hard", "omni:hard", "omni:pcf4", "omni", "contact:pcf", "contact:gaussian",
                   "contact"):
     visibility, _ = st.shadow_only(scene, technique)
-    errors[technique] = st.rmse(visibility, reference, mask)
+    errors[technique] = st.rmse(visibility, truth, mask)
     print("RMSE %-10s %.4f" % (technique, errors[technique]))
 st.check(errors["omni:hard"] == errors["hard"] or abs(errors["omni:hard"] - errors["hard"]) < 0.002,
          "omni:hard is hard's cube lookup")
@@ -42,7 +40,7 @@ for technique in ("contact:pcf", "contact:gaussian", "contact"):
 # the cube map with the distance to the receiver's own plane in its
 # direction; comparing with the receiver's distance instead shadowed the lit
 # floor with noise and darkened it with distance (RMSE 0.156 against
-# reference, twice hard's).
+# reference, twice hard's). Measured against the ray-cast truth.
 lamp = {
     "name": "lamp",
     "size": [240, 180],
@@ -52,9 +50,9 @@ lamp = {
         {"source": "plane", "params": {"size": [10, 10], "resolution": 4}},
         {"source": "cube", "params": {"size": [0.4, 1.6, 0.4]}, "position": [0.0, 0.8, 0.0]},
     ],
-    "shadows": {"technique": "omni", "map_size": 512, "reference": {"samples": 64}},
+    "shadows": {"technique": "omni", "map_size": 512},
 }
-truth, geometry = st.shadow_only(lamp, "reference")
+truth, geometry, measured = st.truth(lamp)
 soft, _ = st.shadow_only(lamp, "omni")
 hard, _ = st.shadow_only(lamp, "hard")
 lit = geometry & (truth > 0.995)
@@ -62,7 +60,7 @@ st.check(lit.sum() > 20000, "the lamp lights most of the floor (%d pixels)" % li
 stray = np.mean(soft[lit] < 0.95)
 st.check(stray < 0.01, "omni leaves the lit floor lit (%.2f%% of its pixels below 0.95)"
          % (100 * stray))
-soft_error = st.rmse(soft, truth, geometry)
-hard_error = st.rmse(hard, truth, geometry)
+soft_error = st.rmse(soft, truth, measured)
+hard_error = st.rmse(hard, truth, measured)
 st.check(soft_error < 0.7 * hard_error,
          "omni beats hard under a low lamp (RMSE %.4f against %.4f)" % (soft_error, hard_error))
