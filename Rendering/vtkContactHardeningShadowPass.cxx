@@ -119,6 +119,7 @@ public:
           program->SetUniformi("contactMap", input->GetTextureUnit());
         }
         program->SetUniformf("contactDepthTolerance", depthTolerance);
+        program->SetUniform2f("contactPixelFootprint", screen->GetPixelFootprint());
         program->SetUniformi("contactDebugView", debugView ? 1 : 0);
         uniforms(program);
       },
@@ -326,7 +327,7 @@ std::string vtkContactHardeningShadowPass::GetCameraPassImplementation()
   const vtkInternals& in = *this->Internals;
   const auto& lights = this->Maps->GetLights();
   std::ostringstream impl;
-  impl << "  vtkContactCameraSetup(vtkShadowPositionWC, vtkShadowNormalWC);\n";
+  impl << "  vtkContactCameraSetup(vtkShadowPositionWC);\n";
   int maps = 0, cubes = 0;
   for (size_t k = 0; k < in.CameraPassUnits.size(); ++k)
   {
@@ -514,6 +515,7 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
           const std::vector<float> passTaps = ScaledTaps(taps, size, false);
           program->SetUniform3fv("contactTaps", this->PoissonTaps, passTaps.data());
           program->SetUniformi("contactTapCount", this->PoissonTaps);
+          program->SetUniformf("contactKernelSize", static_cast<float>(size));
         },
         tolerance, this->DebugView, vtkShadowScreenBuffers::QuadMask::Test,
         1.0f - static_cast<float>(pass) / 256.0f);

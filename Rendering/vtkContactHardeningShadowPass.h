@@ -9,7 +9,7 @@
  * umbra (the early-out of section 5) and dilate D outwards (pass 3). Pass 4
  * then softens S with one of three variants:
  *
- *  - PCF: a box average of S over a D-sized kernel,
+ *  - PCF: the average of S over a disc D pixels across (the default),
  *  - Gaussian: one separable Gaussian blur of S with a D-sized kernel,
  *  - MultiPass: up to PassLimit Poisson-disk Gaussian blurs of S (PoissonTaps
  *    precomputed points in [-1,1]^2, the first at the origin, normalised
@@ -41,8 +41,12 @@
  * blurs a pixel needs. That is the default: the same scene looks right
  * without tuning.
  *
- * Also beyond the paper: blur taps across depth discontinuities of the view
- * are ignored, so shadows do not bleed from a floor onto an object in front.
+ * Also beyond the paper: kernels lie on the receiver rather than the screen
+ * (a tap's distance from the centre counts its change in camera distance),
+ * so they are foreshortened along a surface's slope as its penumbra is, and
+ * PCF averages over a disc, the light's shape. Blur taps across depth
+ * discontinuities of the view are ignored, so shadows do not bleed from a
+ * floor onto an object in front.
  * Point lights work the same way from their cube maps of squared distances.
  * Translucent surfaces receive the hard shadow of the light's map.
  *

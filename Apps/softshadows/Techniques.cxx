@@ -201,7 +201,7 @@ const std::vector<Technique>& Techniques()
     { "contact",
       "vtkContactHardeningShadowPass: contact-hardening soft shadows in screen space (Cherry & "
       "Kooima): a distance map of S and D, then S softened with a D-sized filter",
-      { { "pcf", "one box filter of D pixels" },
+      { { "pcf", "the mean over a disc of D pixels on the receiver" },
         { "gaussian", "one separable Gaussian blur of D pixels" },
         { "multipass", "up to pass_limit Poisson-disk Gaussian blurs, D counting them down" } },
       WithCommonParameters({

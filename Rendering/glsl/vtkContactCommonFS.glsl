@@ -23,6 +23,39 @@ bool vtkContactSameSurface(vec4 center, vec4 tap)
   return tap.b > 0.0 && abs(tap.b - center.b) <= contactDepthTolerance * center.b;
 }
 
+// Beyond the paper: kernels lie on the receiver, not on the screen. A tap
+// `offset` pixels away is this far from the centre along the surface, in
+// pixels (squared): the offset, and the change of camera distance in
+// pixels' world size there. On a floor seen at elevation e a pixel up the
+// screen moves 1 / sin(e) along it, and the distance by cot(e): the kernel
+// is foreshortened along the slope and whole along the level lines, as the
+// penumbra is.
+uniform vec2 contactPixelFootprint; // world size of a buffer pixel: x + y * camera distance
+
+// `perPixel`: 1 / a pixel's world size at the centre (vtkContactPixelsPerLength()).
+float vtkContactSurfaceDistance2(vec4 center, vec4 tap, vec2 offset, float perPixel)
+{
+  float along = (tap.b - center.b) * perPixel;
+  return dot(offset, offset) + along * along;
+}
+
+float vtkContactPixelsPerLength(vec4 center)
+{
+  return 1.0 / (contactPixelFootprint.x + contactPixelFootprint.y * center.b);
+}
+
+// The change of camera distance a pixel across, in pixels' world size, on
+// each axis: from the neighbour right and above where it lies on the same
+// surface, else 0 (the bounds this gives then are the whole disc's).
+vec2 vtkContactSurfaceSlope(vec4 center, ivec2 pixel, float perPixel)
+{
+  vec4 right = vtkContactFetch(pixel + ivec2(1, 0));
+  vec4 up = vtkContactFetch(pixel + ivec2(0, 1));
+  float x = vtkContactSameSurface(center, right) ? right.b - center.b : 0.0;
+  float y = vtkContactSameSurface(center, up) ? up.b - center.b : 0.0;
+  return vec2(x, y) * perPixel;
+}
+
 // Pass 5: the receivers' code (vtkShadowPackTexel()) of a filtering texel
 // `c` with its filtered visibility `v`, or of the debug view of the paper's
 // figure 4 (lit 1, umbra 0.5, penumbra a dark 0.1) on every surface.

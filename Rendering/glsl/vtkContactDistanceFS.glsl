@@ -83,19 +83,16 @@ float vtkContactPassesFor(float width)
 float contactCameraDistance;
 float contactPixelsPerLength;
 
-void vtkContactCameraSetup(vec4 positionWC, vec3 normal)
+void vtkContactCameraSetup(vec4 positionWC)
 {
   vec3 camera = vtkShadowViewToWorld[3].xyz;
   contactCameraDistance = distance(positionWC.xyz, camera);
 #if CONTACT_LIGHT_SIZE
-  // The penumbra lies on the receiver, which the view foreshortens by
-  // |n.v| across its slope: an isotropic kernel sized for the unforeshortened
-  // width blurs that way 1 / |n.v| times too far (seen edge-on, far worse
-  // than a hard edge). Sizing for the foreshortened width errs the other
-  // way along the slope's level lines, where a narrower blur costs less.
-  float facing = abs(dot(normal, (camera - positionWC.xyz) / contactCameraDistance));
+  // The penumbra's width in pixels where it lies across the view; the
+  // filters lay their kernels on the receiver (vtkContactSurfaceDistance2),
+  // which foreshortens them along its slope.
   contactPixelsPerLength =
-    facing / (contactPixelFootprint.x + contactPixelFootprint.y * contactCameraDistance);
+    1.0 / (contactPixelFootprint.x + contactPixelFootprint.y * contactCameraDistance);
 #endif
 }
 

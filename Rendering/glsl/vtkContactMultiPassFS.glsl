@@ -9,6 +9,7 @@
 // Uses: vtkShadowScreenCommonFS.glsl, vtkContactCommonFS.glsl.
 uniform vec3 contactTaps[64]; // offsets in pixels (not rounded) for this pass's kernel, and weights
 uniform int contactTapCount;
+uniform float contactKernelSize; // this pass's, in pixels
 
 void main()
 {
@@ -21,16 +22,26 @@ void main()
     // so that it adds D times its variance: blending the whole blur in by D
     // instead would keep 1 - D of the sharp edge.
     float scale = sqrt(min(c.a, 1.0));
+    // Taps weigh by their distance along the receiver too
+    // (vtkContactSurfaceDistance2): the Gaussian's weight for the part the
+    // screen offset leaves out.
+    float size = contactKernelSize * scale;
+    float falloff = -4.5 / max(size * size, 1.0e-6);
+    float perPixel = vtkContactPixelsPerLength(c);
     // Tap 0 lies at the origin: this pixel.
     float sum = contactTaps[0].z * c.r;
     float weights = contactTaps[0].z;
     for (int i = 1; i < contactTapCount; ++i)
     {
-      vec4 t = vtkContactFetch(pixel + ivec2(floor(contactTaps[i].xy * scale + 0.5)));
+      ivec2 offset = ivec2(floor(contactTaps[i].xy * scale + 0.5));
+      vec4 t = vtkContactFetch(pixel + offset);
       if (vtkContactSameSurface(c, t))
       {
-        sum += contactTaps[i].z * t.r;
-        weights += contactTaps[i].z;
+        vec2 o = vec2(offset);
+        float w = contactTaps[i].z *
+          exp(falloff * (vtkContactSurfaceDistance2(c, t, o, perPixel) - dot(o, o)));
+        sum += w * t.r;
+        weights += w;
       }
     }
     texel = vec4(sum / weights, c.g, c.b, max(c.a - 1.0, 0.0));
