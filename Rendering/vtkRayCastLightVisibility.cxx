@@ -1,12 +1,7 @@
 #include "vtkRayCastLightVisibility.h"
 
-#include "vtkActor.h"
-#include "vtkAssemblyNode.h"
-#include "vtkAssemblyPath.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
-#include "vtkCompositeDataIterator.h"
-#include "vtkCompositeDataSet.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -18,10 +13,9 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataMapper.h"
-#include "vtkPropCollection.h"
 #include "vtkRenderer.h"
 #include "vtkSMPTools.h"
+#include "vtkShadowCasterRegistry.h"
 #include "vtkShadowMapManager.h"
 #include "vtkShadowMatrices.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
@@ -111,71 +105,18 @@ void AddPolyData(
   }
 }
 
-// One actor's polygons, each polydata block its own surface.
-void AddActor(vtkActor* actor, vtkMatrix4x4* matrix, std::vector<Surface>& surfaces)
+// The polygons of every caster the registry lists (each polydata block,
+// assembly part and composite prop's part its own surface), inputs brought
+// up to date by the renderer's bounds.
+std::vector<Surface> CollectSurfaces(vtkRenderer* renderer, double bounds[6])
 {
-  auto* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
-  if (!mapper || !actor->GetVisibility())
-  {
-    return;
-  }
-  const glm::dmat4 modelToWorld = vtkShadowMatrices::FromVTK(matrix);
-  const bool opaque = actor->HasOpaqueGeometry() != 0;
-  mapper->Update();
-  vtkDataObject* input = mapper->GetInputDataObject(0, 0);
-  if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
-  {
-    vtkSmartPointer<vtkCompositeDataIterator> block;
-    block.TakeReference(composite->NewIterator());
-    for (block->InitTraversal(); !block->IsDoneWithTraversal(); block->GoToNextItem())
-    {
-      AddPolyData(
-        vtkPolyData::SafeDownCast(block->GetCurrentDataObject()), modelToWorld, opaque, surfaces);
-    }
-    return;
-  }
-  AddPolyData(vtkPolyData::SafeDownCast(input), modelToWorld, opaque, surfaces);
-}
-
-// The polygons of every visible actor the renderer draws: its actors, the
-// parts of assemblies (matrices composed along their paths), and the parts
-// composite props list (vtkAxesActor's).
-std::vector<Surface> CollectSurfaces(vtkRenderer* renderer)
-{
+  renderer->ComputeVisiblePropBounds(bounds);
+  vtkShadowCasterRegistry casters;
+  casters.Update(renderer);
   std::vector<Surface> surfaces;
-  vtkNew<vtkPropCollection> parts;
-  vtkPropCollection* props = renderer->GetViewProps();
-  vtkCollectionSimpleIterator it;
-  props->InitTraversal(it);
-  while (vtkProp* prop = props->GetNextProp(it))
+  for (const vtkShadowCaster& caster : casters.GetCasters())
   {
-    if (!prop->GetVisibility())
-    {
-      continue;
-    }
-    prop->InitPathTraversal();
-    while (vtkAssemblyPath* path = prop->GetNextPath())
-    {
-      vtkAssemblyNode* node = path->GetLastNode();
-      vtkProp* leaf = node->GetViewProp();
-      if (auto* actor = vtkActor::SafeDownCast(leaf))
-      {
-        AddActor(actor, node->GetMatrix() ? node->GetMatrix() : actor->GetMatrix(), surfaces);
-        continue;
-      }
-      parts->RemoveAllItems();
-      leaf->GetActors(parts);
-      vtkCollectionSimpleIterator part;
-      parts->InitTraversal(part);
-      while (vtkProp* item = parts->GetNextProp(part))
-      {
-        auto* actor = vtkActor::SafeDownCast(item);
-        if (actor && item != leaf)
-        {
-          AddActor(actor, actor->GetMatrix(), surfaces);
-        }
-      }
-    }
+    AddPolyData(caster.Data, caster.ModelToWorld, caster.Opaque, surfaces);
   }
   return surfaces;
 }
@@ -349,20 +290,11 @@ int vtkRayCastLightVisibility::RequestData(
     light.ConeAngle = glm::radians(source->GetConeAngle());
   }
 
-  const std::vector<Surface> surfaces = CollectSurfaces(this->Renderer);
-  double extent = 0.0;
-  {
-    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-    for (const Surface& surface : surfaces)
-    {
-      for (const glm::vec3& point : surface.Points)
-      {
-        lo = glm::min(lo, point);
-        hi = glm::max(hi, point);
-      }
-    }
-    extent = surfaces.empty() ? 1.0 : glm::length(glm::dvec3(hi - lo));
-  }
+  double bounds[6];
+  const std::vector<Surface> surfaces = CollectSurfaces(this->Renderer, bounds);
+  double extent =
+    glm::length(glm::dvec3(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]));
+  extent = bounds[0] <= bounds[1] && std::isfinite(extent) ? extent : 1.0; // none, or NaN points
   // Shadow rays start this far off the surface: above float rounding of
   // the hit, far below any gap a scene means.
   const double offset = 1.0e-5 * extent;
