@@ -205,6 +205,7 @@ protected:
   bool RenderShadowMaps(const vtkRenderState* s) override;
   bool RenderScreenSpace(const vtkRenderState* s) override;
   bool UsesScreenSpace() const override { return true; }
+  bool GuidesScreenSpace() const override { return true; }
   bool SupportsPointLights() const override { return true; }
   int GetScreenResolutionDivisor() const override { return this->ResolutionDivisor; }
   std::string GetCameraPassDeclarations() override;

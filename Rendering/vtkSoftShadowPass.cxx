@@ -215,6 +215,10 @@ void vtkSoftShadowPass::vtkReceiverStage::PostReplace(vtkShadowShaderSources& so
     if (pass->UsesScreenSpace())
     {
       dec << "#define VTK_SHADOW_SCREEN_SPACE\n";
+      if (pass->GuidesScreenSpace())
+      {
+        dec << "#define VTK_SHADOW_SCREEN_GUIDED\n";
+      }
     }
     dec << vtkShadowSurfaceFS << "\n"
         << vtkShadowNormalOffsetFS << "\n"

@@ -249,6 +249,14 @@ protected:
   virtual bool UsesScreenSpace() const { return false; }
 
   /**
+   * True when the technique's valid texels carry flags (their own hard
+   * shadow's side, and the axes along which their penumbra is resolved:
+   * vtkShadowPackTexel()) that guide the receivers' upsampling by their own
+   * full-resolution hard shadow (vtkShadowScreenVisibility()). Default false.
+   */
+  virtual bool GuidesScreenSpace() const { return false; }
+
+  /**
    * Helper for RenderScreenSpace(): draw the camera depth of the opaque props
    * into this->Screen. With `targets` (textures of this->Screen's size), each
    * fragment the camera sees also runs GetCameraPassImplementation(), which

@@ -1,9 +1,10 @@
 // Shared by the contact-hardening passes (after vtkShadowScreenCommonFS).
 // Every map holds the framework's visibility layout
 // (vtkShadowScreenBuffers::GetVisibility()), which vtkShadowPackTexel()
-// codes for the receivers: r = visibility 1 - S, g = 1 where a blur will touch
-// or has touched the pixel (elsewhere receivers keep their own
-// full-resolution hard shadow), b = the surface's camera distance (0 on
+// codes for the receivers: r = visibility 1 - S, g = 0 where no blur touches
+// the pixel (receivers keep their own full-resolution hard shadow there),
+// else 1 + the pixel's hard visibility (the receivers' guide:
+// vtkShadowScreenVisibility()), b = the surface's camera distance (0 on
 // background), a = D (<= 0: not blurred).
 // Uses: vtkShadowScreenCommonFS.glsl (vtkShadowPackTexel).
 uniform sampler2D contactMap;
@@ -65,7 +66,7 @@ vec4 vtkContactOutput(vec4 c, float v)
   if (contactDebugView)
   {
     float marked = v >= 0.999 ? 1.0 : (v <= 0.001 ? 0.5 : 0.1);
-    texel = vec4(marked, c.b > 0.0 ? 1.0 : 0.0, c.b, 0.0);
+    texel = vec4(marked, c.b > 0.0 ? max(c.g, 1.0) : 0.0, c.b, 0.0);
   }
   return vec4(vtkShadowPackTexel(texel));
 }

@@ -52,7 +52,9 @@ void main()
   // changes nothing worth the pixel's sharper full-resolution hard shadow in
   // the receivers.
   d = d >= contactSmallestD ? d : 0.0;
-  vec4 texel = vec4(c.r, d > 0.0 ? 1.0 : 0.0, c.b, d);
+  // g: blurred, and on which side of its hard edge (2: lit), for the
+  // receivers' guided lookup.
+  vec4 texel = vec4(c.r, d > 0.0 ? 1.0 + c.r : 0.0, c.b, d);
   gl_FragData[0] = texel;
   gl_FragData[1] = vec4(vtkShadowPackTexel(texel));
   gl_FragDepth = d > 0.0 ? 1.0 - (min(ceil(d), 254.0) + 1.0) / 256.0 : 1.0;

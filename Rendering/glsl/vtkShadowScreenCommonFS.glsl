@@ -10,20 +10,24 @@ uniform vec3 vtkShadowCameraPosition;
 
 // The receivers' code of a visibility texel (r = visibility, g = 1 where r is
 // valid, b = camera distance; vtkShadowScreenBuffers::BeginVisibility()):
-// one float, an integer below 2^23, exact: 2048 * visibility in [0, 4094]
-// (4095: not valid) plus the camera distance on a log scale in [1, 2047]
-// (0: no surface). A receiver's bilinear lookup then gathers the four codes
-// around it in one fetch (textureGather) instead of fetching four texels.
+// one float, an integer below 2^24, exact: the camera distance on a log
+// scale in [1, 2047] (0: no surface), plus 2048 * visibility in [0, 4094]
+// (4095: not valid), plus 2^23 where g > 1.5: the texel's own hard shadow
+// is lit, for techniques whose receivers follow their own hard edge
+// (VTK_SHADOW_SCREEN_GUIDED, vtkSoftShadowReceiverFS.glsl). A receiver's
+// bilinear lookup then gathers the four codes around it in one fetch
+// (textureGather) instead of fetching four texels.
 uniform float vtkShadowLogNear;     // log2 of the smallest camera distance coded
 uniform float vtkShadowCodesPerLog; // distance codes per unit of log2
 
 float vtkShadowPackTexel(vec4 t)
 {
   float visibility = t.g > 0.5 ? floor(clamp(t.r, 0.0, 1.0) * 4094.0 + 0.5) : 4095.0;
+  float hardLit = t.g > 1.5 ? 8388608.0 : 0.0;
   float distance = t.b > 0.0
     ? clamp(floor((log2(t.b) - vtkShadowLogNear) * vtkShadowCodesPerLog + 1.5), 1.0, 2047.0)
     : 0.0;
-  return visibility * 2048.0 + distance;
+  return hardLit + visibility * 2048.0 + distance;
 }
 
 // This pixel. From texCoord rather than gl_FragCoord so that every pass uses

@@ -73,11 +73,13 @@ uniform float vtkShadowLogNear;    // see vtkShadowPackTexel(), vtkShadowScreenC
 uniform float vtkShadowCodesPerLog;
 
 // What the lookups of all lights share (their textures have one size): the
-// gather point, the bilinear weights and the fragment's distance code, set
-// once a fragment by vtkShadowScreenSetup().
+// gather point, the bilinear weights, the fragment's distance code and how
+// far from it a texel on its surface may lie, set once a fragment by
+// vtkShadowScreenSetup().
 vec2 vtkShadowScreenCorner;
 vec4 vtkShadowScreenWeights; // lower left, lower right, upper left, upper right
 float vtkShadowScreenFragment;
+float vtkShadowScreenTolerance;
 
 void vtkShadowScreenSetup(vec4 positionWC)
 {
@@ -92,6 +94,13 @@ void vtkShadowScreenSetup(vec4 positionWC)
   // The camera sits at the view-space origin.
   vtkShadowScreenFragment = (log2(distance(positionWC.xyz, vtkShadowViewToWorld[3].xyz)) -
                               vtkShadowLogNear) * vtkShadowCodesPerLog + 1.0;
+  // 2% (log2(1.02)) and rounding, plus the change of distance over a texel
+  // on this fragment's own plane: on a floor seen nearly edge-on it exceeds
+  // 2% from one texel to the next. (The derivatives are the primitive's
+  // own, so they never cross a silhouette.)
+  vec2 slope = vec2(dFdx(vtkShadowScreenFragment), dFdy(vtkShadowScreenFragment));
+  vtkShadowScreenTolerance =
+    0.0286 * vtkShadowCodesPerLog + 0.5 + dot(abs(slope), 1.0 / vtkShadowScreenScale);
 }
 
 // A screen-space visibility texture (vtkShadowScreenBuffers::BeginVisibility:
@@ -99,28 +108,41 @@ void vtkShadowScreenSetup(vec4 positionWC)
 // possibly smaller than the viewport, read coded (vtkShadowPackFS.glsl: one
 // float a texel, the four around the fragment gathered in one fetch):
 // bilinear over the four texels that lie on this fragment's surface (at the
-// position given to vtkShadowScreenSetup(); camera distances within 2%),
-// each giving its visibility where valid and the fragment's own
-// full-resolution `hard` one where not.
-// Fragments no texel belongs to (silhouettes the buffer missed, translucent
-// surfaces not within 2% of an opaque one, surfaces seen within a few degrees
-// of edge-on) keep `hard`. A tolerance that grows with the distance's slope
-// would keep the screen-space result on grazing surfaces, but there the
-// isotropic screen-space kernels do no better than the hard shadow
-// (docs/quality.md).
+// position given to vtkShadowScreenSetup(); camera distances within 2% of
+// what its plane gives there), each giving its visibility where valid and
+// the fragment's own full-resolution `hard` one where not. Fragments no
+// texel belongs to (silhouettes the buffer missed, translucent surfaces not
+// within 2% of an opaque one) keep `hard`.
+//
+// Guided (VTK_SHADOW_SCREEN_GUIDED): valid texels say on which side of
+// their own hard edge they lie. Where a penumbra is narrower on the screen
+// than a texel (a floor seen nearly edge-on foreshortens it), the texels
+// either side of the edge keep nearly their hard values, and interpolating
+// between them would smear the edge over two texels; a texel across the
+// edge from the fragment then counts by how far the filtering moved it from
+// its hard value (fully from half the way), and the fragment's own
+// full-resolution hard edge places the penumbra.
 float vtkShadowScreenVisibility(sampler2D screen, float hard)
 {
   // Gathered at the four texels' shared corner as upper left, upper right,
   // lower right, lower left; reordered to lower left, lower right, upper
   // left, upper right.
   vec4 codes = textureGather(screen, vtkShadowScreenCorner).wzxy;
+  vec4 lit = vec4(greaterThanEqual(codes, vec4(8388608.0)));
+  codes -= lit * 8388608.0;
   vec4 visibility = floor(codes / 2048.0);
   vec4 distances = codes - 2048.0 * visibility;
-  float tolerance = 0.0286 * vtkShadowCodesPerLog + 0.5; // log2(1.02), and rounding
+  vec4 valid = vec4(notEqual(visibility, vec4(4095.0)));
   vec4 weights = vtkShadowScreenWeights *
-    vec4(lessThanEqual(abs(distances - vtkShadowScreenFragment), vec4(tolerance))) *
+    vec4(lessThanEqual(abs(distances - vtkShadowScreenFragment), vec4(vtkShadowScreenTolerance))) *
     vec4(greaterThan(distances, vec4(0.0)));
-  vec4 values = mix(visibility / 4094.0, vec4(hard), vec4(equal(visibility, vec4(4095.0))));
+  vec4 values = mix(vec4(hard), visibility / 4094.0, valid);
+#ifdef VTK_SHADOW_SCREEN_GUIDED
+  vec4 across = abs(lit - (hard >= 0.5 ? 1.0 : 0.0)) * valid;
+  vec4 keep = 1.0 - across * (1.0 - clamp(abs(values - lit) * 2.0, 0.0, 1.0));
+  // None kept (the fragment alone on its side): the unguided lookup.
+  weights *= dot(weights, keep) > 0.0 ? keep : vec4(1.0);
+#endif
   float total = dot(weights, vec4(1.0));
   return total > 0.0 ? dot(weights, values) / total : hard;
 }
