@@ -92,17 +92,19 @@ bool vtkReferenceShadowPass::RenderScreenSpace(const vtkRenderState* s)
   for (size_t slot = 0; slot < lights.size(); ++slot)
   {
     const auto& light = lights[slot];
-    const auto disc =
-      vtkShadowSampling::StratifiedDisc(light.Radius > 0.0 ? this->NumberOfSamples : 1, this->Seed);
-    const float weight = 1.0f / static_cast<float>(disc.size());
+    const auto ball =
+      vtkShadowSampling::HaltonBall(light.Radius > 0.0 ? this->NumberOfSamples : 1, this->Seed);
+    const float weight = 1.0f / static_cast<float>(ball.size());
     glm::dvec3 e1, e2;
     Basis(light.Direction, e1, e2);
 
     this->Screen->BeginVisibility(static_cast<int>(slot), 0.0f);
-    for (const auto& d : disc)
+    for (const auto& d : ball)
     {
-      // Spot and point lights: points on a disc of `radius` across the axis.
-      // Directional: directions within the angular radius.
+      // Spot and point lights: points in the sphere of `radius` that every
+      // receiver, whatever its direction, sees spread uniformly over the
+      // sphere's disc (a disc across the axis alone would look narrower
+      // from the side). Directional: directions within the angular radius.
       glm::dvec3 eye = light.Position;
       glm::dvec3 direction = light.Direction;
       if (light.Directional)
@@ -112,7 +114,7 @@ bool vtkReferenceShadowPass::RenderScreenSpace(const vtkRenderState* s)
       }
       else
       {
-        eye += light.Radius * (d.x * e1 + d.y * e2);
+        eye += light.Radius * (d.x * e1 + d.y * e2 + d.z * light.Direction);
       }
       const double eyeWC[3] = { eye.x, eye.y, eye.z };
       const double directionWC[3] = { direction.x, direction.y, direction.z };

@@ -4,13 +4,15 @@
  *          drawn from points sampled over each light.
  *
  * Technique `reference`. For each shadowed light it draws NumberOfSamples
- * depth maps, from points on a disc of the light's radius perpendicular to
- * its axis (spot lights) or across the direction to the scene's centre (point
- * lights, each sample a whole cube map), or from directions within its
- * angular radius (directional lights), and averages their binary visibility per pixel in a
- * screen-space texture. The samples are stratified (jittered on a grid mapped
- * to the disc by Shirley's concentric mapping) with a fixed seed, so every run
- * gives the same image. Radius 0 draws one sample: exactly `hard` without PCF.
+ * depth maps, from points inside the sphere of the light's radius (spot
+ * lights; point lights, each sample a whole cube map) or from directions
+ * within its angular radius (directional lights), and averages their binary
+ * visibility per pixel in a screen-space texture. The points are spread so
+ * that every receiver, from whatever side it sees the light, sees them
+ * uniform over the sphere's disc (vtkShadowSampling::HaltonBall(); a disc
+ * across the axis alone looks narrower from the side), low-discrepancy
+ * (Halton) with a fixed seed, so every run gives the same image. Radius 0
+ * draws one sample: exactly `hard` without PCF.
  *
  * Screen-space visibility belongs to the nearest opaque surface; translucent
  * surfaces receive the hard shadow of the light's centre.

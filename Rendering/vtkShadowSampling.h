@@ -10,9 +10,11 @@
 #ifndef vtkShadowSampling_h
 #define vtkShadowSampling_h
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -101,6 +103,59 @@ inline std::vector<glm::dvec2> StratifiedDisc(int count, unsigned int seed)
       const double v = (j + Uniform(generator)) / k;
       samples.push_back(ConcentricDisc(u, v));
     }
+  }
+  return samples;
+}
+
+/**
+ * Points in the unit ball whose projection along any direction is uniform
+ * on the unit disc, as a spherical light's is from every receiver: the
+ * first three coordinates of points uniform on the 3-sphere in 4D (a plane
+ * projection of which is uniform on the disc, Archimedes' theorem one
+ * dimension up). x, y are StratifiedDisc(), seen along z exactly that disc;
+ * z = sqrt(1 - x^2 - y^2) cos(2 pi w), w stratified over a shuffle.
+ */
+/// The radical inverse of i in `base`: Halton's sequence.
+inline double RadicalInverse(unsigned int i, unsigned int base)
+{
+  const double inverse = 1.0 / base;
+  double value = 0.0;
+  for (double scale = inverse; i > 0; i /= base, scale *= inverse)
+  {
+    value += (i % base) * scale;
+  }
+  return value;
+}
+
+/**
+ * `count` points in the unit ball whose projection along any direction is
+ * uniform on the unit disc, as a spherical light's is from every receiver:
+ * the first three coordinates of points uniform on the 3-sphere in 4D (a
+ * plane projection of which is uniform on the disc: Archimedes' theorem one
+ * dimension up), x, y = ConcentricDisc(u, v) and
+ * z = sqrt(1 - x^2 - y^2) cos(2 pi w). (u, v, w): Halton's sequence in bases
+ * 2, 3, 5, shifted by a random offset (Cranley-Patterson), so that the
+ * points are well spread seen from every side, not only along z. One point,
+ * at the centre, when `count` is 1.
+ */
+inline std::vector<glm::dvec3> HaltonBall(int count, unsigned int seed)
+{
+  if (count <= 1)
+  {
+    return { glm::dvec3(0.0) };
+  }
+  std::mt19937 generator(seed);
+  const glm::dvec3 shift(Uniform(generator), Uniform(generator), Uniform(generator));
+  std::vector<glm::dvec3> samples;
+  samples.reserve(static_cast<size_t>(count));
+  for (int i = 1; i <= count; ++i)
+  {
+    const glm::dvec3 u = glm::fract(
+      glm::dvec3(RadicalInverse(i, 2), RadicalInverse(i, 3), RadicalInverse(i, 5)) + shift);
+    const glm::dvec2 d = ConcentricDisc(u.x, u.y);
+    const double z =
+      std::sqrt(std::max(0.0, 1.0 - glm::dot(d, d))) * std::cos(2.0 * glm::pi<double>() * u.z);
+    samples.emplace_back(d.x, d.y, z);
   }
   return samples;
 }
