@@ -111,9 +111,11 @@ public:
 
   ///@{
   /**
-   * Receiver-side normal offset, in shadow-map texels: the point looked up
-   * in a map moves this far along its surface's normal, towards the light.
-   * Default 1.0.
+   * Receiver-side offset, in shadow-map texels: the point looked up in a
+   * map moves towards the light along its own ray until it lies this far in
+   * front of its surface's plane (as far as a normal offset of this many
+   * texels puts it, without the normal offset's sideways shift of shadow
+   * edges; vtkShadowNormalOffsetFS.glsl). Default 1.0.
    */
   vtkSetClampMacro(NormalBias, double, 0.0, 16.0);
   vtkGetMacro(NormalBias, double);

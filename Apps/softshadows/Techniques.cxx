@@ -59,7 +59,7 @@ std::vector<TechniqueParameter> WithCommonParameters(std::vector<TechniqueParame
     &vtkSoftShadowPass::SetConstantBias, &vtkSoftShadowPass::GetConstantBias));
   own.push_back(
     Bind<vtkSoftShadowPass, double>("normal_bias", ValueType::Number, Range::Between(0.0, 16.0),
-      "receiver offset along the surface normal, towards the light, in shadow-map texels",
+      "how far in front of its surface a receiver point is looked up, along the light's ray, in shadow-map texels",
       &vtkSoftShadowPass::SetNormalBias, &vtkSoftShadowPass::GetNormalBias));
   own.push_back(
     Bind<vtkSoftShadowPass, double>("distance_bias", ValueType::Number, Range::Between(0.5, 1.0),

@@ -19,16 +19,18 @@ float vtkShadowCubeStored(samplerCube cube, vec3 direction, float range)
     : texel.r;
 }
 
-// The direction to look up for a point, moved `normalBias` texels along its
-// normal towards the light; `size` returns a texel's world size there
-// (texel: a texel's size per unit of distance, 2 / map size).
+// The direction to look up for a point, moved towards the light along its
+// ray by `normalBias` texels over cos(theta), as vtkShadowNormalOffset()
+// does; `size` returns a texel's world size there (texel: a texel's size
+// per unit of distance, 2 / map size).
 vec3 vtkShadowCubeDirection(vec3 center, vec4 positionWC, vec3 normalWC, float texel,
   float normalBias, out float size)
 {
   vec3 toPoint = positionWC.xyz - center;
-  vec3 n = dot(normalWC, toPoint) > 0.0 ? -normalWC : normalWC;
+  float reach = max(sqrt(dot(toPoint, toPoint)), 1.0e-20);
+  float facing = max(abs(dot(normalWC, toPoint)) / reach, 0.25);
   size = texel * max(abs(toPoint.x), max(abs(toPoint.y), abs(toPoint.z)));
-  return toPoint + n * (size * normalBias);
+  return toPoint * max(1.0 - size * normalBias / (facing * reach), 0.0);
 }
 
 // Two unit vectors across `d`, for filter taps.
