@@ -92,19 +92,29 @@ bool vtkReferenceShadowPass::RenderScreenSpace(const vtkRenderState* s)
   for (size_t slot = 0; slot < lights.size(); ++slot)
   {
     const auto& light = lights[slot];
-    const auto ball =
-      vtkShadowSampling::HaltonBall(light.Radius > 0.0 ? this->NumberOfSamples : 1, this->Seed);
-    const float weight = 1.0f / static_cast<float>(ball.size());
+    const int count = light.Radius > 0.0 ? this->NumberOfSamples : 1;
+    std::vector<glm::dvec3> points;
+    if (this->Sampling == Sphere)
+    {
+      points = vtkShadowSampling::HaltonBall(count, this->Seed);
+    }
+    else
+    {
+      for (const auto& d : vtkShadowSampling::StratifiedDisc(count, this->Seed))
+      {
+        points.emplace_back(d, 0.0);
+      }
+    }
+    const float weight = 1.0f / static_cast<float>(points.size());
     glm::dvec3 e1, e2;
     Basis(light.Direction, e1, e2);
 
     this->Screen->BeginVisibility(static_cast<int>(slot), 0.0f);
-    for (const auto& d : ball)
+    for (const auto& d : points)
     {
-      // Spot and point lights: points in the sphere of `radius` that every
-      // receiver, whatever its direction, sees spread uniformly over the
-      // sphere's disc (a disc across the axis alone would look narrower
-      // from the side). Directional: directions within the angular radius.
+      // Spot and point lights: points on the disc or in the sphere of
+      // `radius` (z along the axis). Directional: directions within the
+      // angular radius, from the points' x and y.
       glm::dvec3 eye = light.Position;
       glm::dvec3 direction = light.Direction;
       if (light.Directional)
@@ -230,5 +240,6 @@ void vtkReferenceShadowPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "NumberOfSamples: " << this->NumberOfSamples << "\n";
+  os << indent << "Sampling: " << (this->Sampling == Sphere ? "Sphere" : "Disc") << "\n";
   os << indent << "Seed: " << this->Seed << "\n";
 }

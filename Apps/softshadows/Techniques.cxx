@@ -59,7 +59,8 @@ std::vector<TechniqueParameter> WithCommonParameters(std::vector<TechniqueParame
     &vtkSoftShadowPass::SetConstantBias, &vtkSoftShadowPass::GetConstantBias));
   own.push_back(
     Bind<vtkSoftShadowPass, double>("normal_bias", ValueType::Number, Range::Between(0.0, 16.0),
-      "how far in front of its surface a receiver point is looked up, along the light's ray, in shadow-map texels",
+      "how far in front of its surface a receiver point is looked up, along the light's ray, in "
+      "shadow-map texels",
       &vtkSoftShadowPass::SetNormalBias, &vtkSoftShadowPass::GetNormalBias));
   own.push_back(
     Bind<vtkSoftShadowPass, double>("distance_bias", ValueType::Number, Range::Between(0.5, 1.0),
@@ -188,7 +189,10 @@ const std::vector<Technique>& Techniques()
     { "reference",
       "vtkReferenceShadowPass: ground truth, the average of many hard shadow maps drawn from "
       "points sampled over each light (slow)",
-      {},
+      { { "disc", "points on a disc across the light's axis (SPEC's reference)" },
+        { "sphere",
+          "points in the light's sphere, uniform over its disc from every side, as the "
+          "ray-cast truth" } },
       WithCommonParameters({
         Bind<vtkReferenceShadowPass, int>("samples", ValueType::Integer, Range::Between(1, 4096),
           "light samples (shadow maps) per light, rounded down to a square",
@@ -197,7 +201,13 @@ const std::vector<Technique>& Techniques()
           "seed of the light sample jitter", &vtkReferenceShadowPass::SetSeed,
           &vtkReferenceShadowPass::GetSeed),
       }),
-      [](const std::string&) { return Wrap(vtkSmartPointer<vtkReferenceShadowPass>::New()); } },
+      [](const std::string& variant)
+      {
+        auto pass = vtkSmartPointer<vtkReferenceShadowPass>::New();
+        pass->SetSampling(
+          variant == "sphere" ? vtkReferenceShadowPass::Sphere : vtkReferenceShadowPass::Disc);
+        return Wrap(pass);
+      } },
     { "contact",
       "vtkContactHardeningShadowPass: contact-hardening soft shadows in screen space (Cherry & "
       "Kooima): a distance map of S and D, then S softened with a D-sized filter",
