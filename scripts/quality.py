@@ -15,7 +15,8 @@ import tempfile
 
 import numpy as np
 
-TECHNIQUES = ["hard", "reference", "contact", "contact:gaussian", "contact:multipass", "omni"]
+TECHNIQUES = ["hard", "reference", "reference:sphere", "contact", "contact:gaussian",
+              "contact:multipass", "omni"]
 SCENES = sorted(glob.glob("Examples/Scenes/quality/*.json"))
 DOC = "docs/quality.md"
 BEGIN, END = "<!-- quality table: scripts/quality.sh -->", "<!-- end of quality table -->"
@@ -33,7 +34,7 @@ def json_lines(text):
 
 
 def measure(program):
-    """{scene: {technique: {"rmse", "mismatch", "ratio"}}}"""
+    """{scene: {technique: {"rmse", "mismatch", "umbra", "penumbra_ratio", "ratio"}}}"""
     figures = {}
     for path in SCENES:
         name = os.path.splitext(os.path.basename(path))[0]
@@ -42,14 +43,14 @@ def measure(program):
         timing = json_lines(run(program, "bench", path, "--techniques", ",".join(TECHNIQUES),
                                 "--frames", "10", "--json"))
         ratios = {t["technique"]: t["ratio_to_hard"] for t in timing}
-        figures[name] = {q["technique"]: {"rmse": q["rmse"], "mismatch": q["mismatch"],
-                                          "ratio": ratios[q["technique"]]} for q in quality}
+        figures[name] = {q["technique"]: dict(q, ratio=ratios[q["technique"]]) for q in quality}
     return figures
 
 
 def table(figures):
-    """Three markdown tables, scenes as rows: RMSE (and its ratio to
-    `hard`'s), mismatch, frame time over `hard`'s."""
+    """Five markdown tables, scenes as rows: RMSE (and its ratio to
+    `hard`'s), mismatch, the umbra's mean visibility, the penumbra's pixels
+    over the truth's, frame time over `hard`'s."""
     def one(title, cell):
         lines = ["| %s | " % title + " | ".join("`%s`" % t for t in TECHNIQUES) + " |",
                  "|---|" + "---|" * len(TECHNIQUES)]
@@ -65,6 +66,8 @@ def table(figures):
     return "\n\n".join([
         one("RMSE (/ `hard`)", rmse),
         one("mismatch", lambda f, t: "%.1f%%" % (100 * f[t]["mismatch"])),
+        one("umbra (mean visibility where the truth is umbra)", lambda f, t: "%.3f" % f[t]["umbra"]),
+        one("penumbra pixels / the truth's", lambda f, t: "%.2f" % f[t]["penumbra_ratio"]),
         one("frame time / `hard`", lambda f, t: "%.2f" % f[t]["ratio"])])
 
 

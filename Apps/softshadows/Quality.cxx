@@ -88,24 +88,37 @@ QualityFigures CompareWithTruth(vtkImageData* shadowOnly, vtkImageData* truth)
     throw std::logic_error("the frame and the truth differ in size");
   }
   QualityFigures figures;
-  double squares = 0.0;
-  long off = 0;
+  double squares = 0.0, umbraSum = 0.0;
+  long off = 0, umbra = 0, penumbra = 0, truthPenumbra = 0;
+  auto inPenumbra = [](double v) { return v > UmbraLevel && v < 1.0 - UmbraLevel; };
   for (vtkIdType i = 0; i < visibility->GetNumberOfTuples(); ++i)
   {
     if (mask->GetTuple1(i) <= 0.0)
     {
       continue;
     }
-    const double error = frame->GetComponent(i, 0) / 255.0 - visibility->GetTuple1(i);
+    const double value = frame->GetComponent(i, 0) / 255.0;
+    const double truthValue = visibility->GetTuple1(i);
+    const double error = value - truthValue;
     squares += error * error;
     off += std::abs(error) > MismatchTolerance ? 1 : 0;
     ++figures.Pixels;
+    if (truthValue <= UmbraLevel)
+    {
+      umbraSum += value;
+      ++umbra;
+    }
+    penumbra += inPenumbra(value) ? 1 : 0;
+    truthPenumbra += inPenumbra(truthValue) ? 1 : 0;
   }
   if (figures.Pixels > 0)
   {
     figures.RMSE = std::sqrt(squares / static_cast<double>(figures.Pixels));
     figures.Mismatch = static_cast<double>(off) / static_cast<double>(figures.Pixels);
   }
+  figures.Umbra = umbra > 0 ? umbraSum / static_cast<double>(umbra) : 0.0;
+  figures.PenumbraRatio =
+    truthPenumbra > 0 ? static_cast<double>(penumbra) / static_cast<double>(truthPenumbra) : 0.0;
   return figures;
 }
 }

@@ -31,7 +31,16 @@ struct QualityFigures
   double RMSE = 0.0;     ///< of visibility, over the mask
   double Mismatch = 0.0; ///< share of the mask's pixels more than MismatchTolerance off
   long Pixels = 0;       ///< in the mask
+  /// Mean visibility where the truth is umbra (at most UmbraLevel): 0 when
+  /// the umbra is as dark as the truth's.
+  double Umbra = 0.0;
+  /// Pixels in penumbra (strictly between UmbraLevel and 1 - UmbraLevel),
+  /// the frame's over the truth's: 1 when penumbrae are as wide.
+  double PenumbraRatio = 0.0;
 };
+
+/// Visibility within this of 0 is umbra, within this of 1 lit.
+constexpr double UmbraLevel = 0.02;
 
 /// A visible error: a tenth of the way between lit and umbra.
 constexpr double MismatchTolerance = 0.1;

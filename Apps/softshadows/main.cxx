@@ -381,7 +381,8 @@ int Quality(const std::vector<std::string>& arguments)
   {
     std::cout << "against the ray-cast truth (" << samples << " rays a pixel), " << pixels[0] << "x"
               << pixels[1] << ", light " << light << ":\n";
-    std::printf("%-24s %8s %9s %8s\n", "technique", "RMSE", "mismatch", "pixels");
+    std::printf("%-24s %8s %9s %8s %7s %9s\n", "technique", "RMSE", "mismatch", "pixels", "umbra",
+      "penumbra");
   }
   for (const TechniqueInstance& technique : session.Techniques)
   {
@@ -390,14 +391,15 @@ int Quality(const std::vector<std::string>& arguments)
     if (json)
     {
       std::printf("{\"technique\": \"%s\", \"rmse\": %.5f, \"mismatch\": %.5f, "
-                  "\"pixels\": %ld, \"samples\": %d, \"size\": [%d, %d]}\n",
+                  "\"pixels\": %ld, \"samples\": %d, \"size\": [%d, %d], \"umbra\": %.5f, "
+                  "\"penumbra_ratio\": %.5f}\n",
         technique.Spec.c_str(), figures.RMSE, figures.Mismatch, figures.Pixels, samples, pixels[0],
-        pixels[1]);
+        pixels[1], figures.Umbra, figures.PenumbraRatio);
     }
     else
     {
-      std::printf("%-24s %8.4f %8.1f%% %8ld\n", technique.Spec.c_str(), figures.RMSE,
-        100.0 * figures.Mismatch, figures.Pixels);
+      std::printf("%-24s %8.4f %8.1f%% %8ld %7.3f %9.2f\n", technique.Spec.c_str(), figures.RMSE,
+        100.0 * figures.Mismatch, figures.Pixels, figures.Umbra, figures.PenumbraRatio);
     }
   }
   return 0;
