@@ -189,6 +189,23 @@ public:
 
   ///@{
   /**
+   * Where the buffers cannot hold a penumbra (narrower on the screen than
+   * two of their pixels, as on a floor seen nearly edge-on), receivers
+   * filter their own hard shadow again in light space, 16 taps over a disc
+   * of the penumbra's width on their surface. On the `grazing` quality
+   * scene RMSE against the ray-cast truth drops from 0.85 to 0.62 of
+   * `hard`'s; on a software rasterizer every fragment pays about one tap
+   * even where nothing is refined (the demo: 1.78 instead of 1.55 times
+   * `hard`'s instructions), on hardware only the refined ones do. Default
+   * off.
+   */
+  vtkSetMacro(RefineUnresolved, bool);
+  vtkGetMacro(RefineUnresolved, bool);
+  vtkBooleanMacro(RefineUnresolved, bool);
+  ///@}
+
+  ///@{
+  /**
    * Debug view of the paper's figure 4: the visibility becomes 1 where lit,
    * 0.5 in the umbra and 0.1 in the penumbra, so the penumbra shows as a dark
    * band around a grey umbra. Default off.
@@ -206,6 +223,7 @@ protected:
   bool RenderScreenSpace(const vtkRenderState* s) override;
   bool UsesScreenSpace() const override { return true; }
   bool GuidesScreenSpace() const override { return true; }
+  bool RefinesScreenSpace() const override { return this->RefineUnresolved; }
   bool SupportsPointLights() const override { return true; }
   int GetScreenResolutionDivisor() const override { return this->ResolutionDivisor; }
   std::string GetCameraPassDeclarations() override;
@@ -226,6 +244,7 @@ protected:
   bool UmbraEarlyOut = true;
   int EarlyOutKernelSize = 25;
   int ResolutionDivisor = 2;
+  bool RefineUnresolved = false;
   bool DebugView = false;
 
 private:

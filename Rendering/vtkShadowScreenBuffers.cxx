@@ -441,6 +441,7 @@ void vtkShadowScreenBuffers::SetUniforms(vtkShaderProgram* program, int numberOf
   float scale[2] = { static_cast<float>(this->Width) / std::max(this->ViewportSize[0], 1),
     static_cast<float>(this->Height) / std::max(this->ViewportSize[1], 1) };
   program->SetUniform2f("vtkShadowScreenScale", scale);
+  program->SetUniform2f("vtkShadowTexelFootprint", this->PixelFootprint);
   program->SetUniformf("vtkShadowLogNear", this->LogNear);
   program->SetUniformf("vtkShadowCodesPerLog", this->CodesPerLog);
   for (int i = 0; i < numberOfLights && i < static_cast<int>(this->Packed.size()); ++i)

@@ -218,6 +218,10 @@ void vtkSoftShadowPass::vtkReceiverStage::PostReplace(vtkShadowShaderSources& so
       if (pass->GuidesScreenSpace())
       {
         dec << "#define VTK_SHADOW_SCREEN_GUIDED\n";
+        if (pass->RefinesScreenSpace())
+        {
+          dec << "#define VTK_SHADOW_SCREEN_REFINE\n";
+        }
       }
     }
     dec << vtkShadowSurfaceFS << "\n"
@@ -708,7 +712,18 @@ std::string vtkSoftShadowPass::GetVisibilityExpression(int slot)
       "vtkShadowPCFRadius)";
   if (this->UsesScreenSpace())
   {
-    return "vtkShadowScreenVisibility(vtkShadowScreen[" + i + "], " + hard + ")";
+    const std::string screen =
+      "vtkShadowScreenVisibility(vtkShadowScreen[" + i + "], " + hard + ")";
+    if (!this->GuidesScreenSpace() || !this->RefinesScreenSpace())
+    {
+      return screen;
+    }
+    // Refined in light space where the buffer cannot hold the penumbra.
+    return "vtkShadowScreenRefine(" + screen + ", " +
+      (light.Point ? "vtkShadowCube[" + m + "], vtkShadowCubeCenter[" + m +
+            "], vtkShadowCubeRange[" + m + "]"
+                   : "vtkShadowMap[" + m + "], " + i) +
+      ", vtkShadowPositionWC, vtkShadowNormalWC)";
   }
   return hard;
 }

@@ -259,6 +259,13 @@ protected:
   virtual bool GuidesScreenSpace() const { return false; }
 
   /**
+   * True when guided receivers also refine, in light space, what the
+   * screen-space texels could not resolve (vtkShadowScreenRefine(); the
+   * texels carry their penumbra's width). Default false.
+   */
+  virtual bool RefinesScreenSpace() const { return false; }
+
+  /**
    * Helper for RenderScreenSpace(): draw the camera depth of the opaque props
    * into this->Screen. With `targets` (textures of this->Screen's size), each
    * fragment the camera sees also runs GetCameraPassImplementation(), which

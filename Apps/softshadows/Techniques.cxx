@@ -269,6 +269,12 @@ const std::vector<Technique>& Techniques()
           "kernel sizes count their pixels",
           &vtkContactHardeningShadowPass::SetResolutionDivisor,
           &vtkContactHardeningShadowPass::GetResolutionDivisor),
+        Bind<vtkContactHardeningShadowPass, bool>("refine_unresolved", ValueType::Boolean,
+          Range::Any(),
+          "where the buffers cannot hold a penumbra (floors seen nearly edge-on), receivers "
+          "filter their hard shadow again in light space over the penumbra's width",
+          &vtkContactHardeningShadowPass::SetRefineUnresolved,
+          &vtkContactHardeningShadowPass::GetRefineUnresolved),
         Bind<vtkContactHardeningShadowPass, bool>("debug_view", ValueType::Boolean, Range::Any(),
           "mark umbra (grey) and penumbra (dark) as in the paper's figure 4",
           &vtkContactHardeningShadowPass::SetDebugView,

@@ -3,9 +3,10 @@
 // (vtkShadowScreenBuffers::GetVisibility()), which vtkShadowPackTexel()
 // codes for the receivers: r = visibility 1 - S, g = 0 where no blur touches
 // the pixel (receivers keep their own full-resolution hard shadow there),
-// else 1 + the pixel's hard visibility (the receivers' guide:
-// vtkShadowScreenVisibility()), b = the surface's camera distance (0 on
-// background), a = D (<= 0: not blurred).
+// else 1 + the flags of vtkShadowPackTexel() (the receivers' guide: the
+// pixel's hard side, its penumbra's width; vtkShadowScreenVisibility()),
+// b = the surface's camera distance (0 on background), a = D (<= 0: not
+// blurred).
 // Uses: vtkShadowScreenCommonFS.glsl (vtkShadowPackTexel).
 uniform sampler2D contactMap;
 uniform float contactDepthTolerance;
@@ -66,7 +67,9 @@ vec4 vtkContactOutput(vec4 c, float v)
   if (contactDebugView)
   {
     float marked = v >= 0.999 ? 1.0 : (v <= 0.001 ? 0.5 : 0.1);
-    texel = vec4(marked, c.b > 0.0 ? max(c.g, 1.0) : 0.0, c.b, 0.0);
+    // The marks keep the hard side but no width: no receiver refines them.
+    float g = c.g > 0.5 ? 1.0 + mod(c.g - 1.0, 2.0) : 1.0;
+    texel = vec4(marked, c.b > 0.0 ? g : 0.0, c.b, 0.0);
   }
   return vec4(vtkShadowPackTexel(texel));
 }

@@ -18,6 +18,22 @@ uniform int contactTapCount;
 uniform sampler2D contactTiles;
 uniform int contactTileSize;
 uniform float contactSmallestD;
+// The penumbra's width in pixels on the receiver for a D: a kernel's
+// (clamped to the maximum), or, counting multi-pass blurs, 4 sigma of their
+// summed variances (contactPassVariances[k]: that of k passes).
+uniform bool contactCountsPasses;
+uniform int contactMaximumKernel;
+uniform float contactPassVariances[65];
+
+float vtkContactWidth(float d)
+{
+  if (contactCountsPasses)
+  {
+    int k = int(min(d, 63.0));
+    return 4.0 * sqrt(mix(contactPassVariances[k], contactPassVariances[k + 1], d - float(k)));
+  }
+  return min(d, float(contactMaximumKernel));
+}
 
 void main()
 {
@@ -52,9 +68,10 @@ void main()
   // changes nothing worth the pixel's sharper full-resolution hard shadow in
   // the receivers.
   d = d >= contactSmallestD ? d : 0.0;
-  // g: blurred, and on which side of its hard edge (2: lit), for the
-  // receivers' guided lookup.
-  vec4 texel = vec4(c.r, d > 0.0 ? 1.0 + c.r : 0.0, c.b, d);
+  // g: blurred, with the flags of the receivers' guided lookup: on which
+  // side of its hard edge the pixel lies, and its penumbra's width.
+  float flags = c.r + 2.0 * vtkShadowWidthCode(vtkContactWidth(d));
+  vec4 texel = vec4(c.r, d > 0.0 ? 1.0 + flags : 0.0, c.b, d);
   gl_FragData[0] = texel;
   gl_FragData[1] = vec4(vtkShadowPackTexel(texel));
   gl_FragDepth = d > 0.0 ? 1.0 - (min(ceil(d), 254.0) + 1.0) / 256.0 : 1.0;

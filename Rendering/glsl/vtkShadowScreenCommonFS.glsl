@@ -11,23 +11,33 @@ uniform vec3 vtkShadowCameraPosition;
 // The receivers' code of a visibility texel (r = visibility, g = 1 where r is
 // valid, b = camera distance; vtkShadowScreenBuffers::BeginVisibility()):
 // one float, an integer below 2^24, exact: the camera distance on a log
-// scale in [1, 2047] (0: no surface), plus 2048 * visibility in [0, 4094]
-// (4095: not valid), plus 2^23 where g > 1.5: the texel's own hard shadow
-// is lit, for techniques whose receivers follow their own hard edge
-// (VTK_SHADOW_SCREEN_GUIDED, vtkSoftShadowReceiverFS.glsl). A receiver's
-// bilinear lookup then gathers the four codes around it in one fetch
-// (textureGather) instead of fetching four texels.
+// scale in [1, 2047] (0: no surface), plus 2048 * visibility in [0, 254]
+// (255: not valid), plus 2^19 * flags, which techniques whose receivers are
+// guided by their own hard shadow (VTK_SHADOW_SCREEN_GUIDED,
+// vtkSoftShadowReceiverFS.glsl) give as g = 1 + flags on valid texels:
+// bit 0 the texel's own hard shadow is lit, bits 1-4 its penumbra's width
+// (vtkShadowWidthCode()). A receiver's bilinear lookup then gathers the
+// four codes around it in one fetch (textureGather) instead of fetching
+// four texels.
 uniform float vtkShadowLogNear;     // log2 of the smallest camera distance coded
 uniform float vtkShadowCodesPerLog; // distance codes per unit of log2
 
 float vtkShadowPackTexel(vec4 t)
 {
-  float visibility = t.g > 0.5 ? floor(clamp(t.r, 0.0, 1.0) * 4094.0 + 0.5) : 4095.0;
-  float hardLit = t.g > 1.5 ? 8388608.0 : 0.0;
+  bool valid = t.g > 0.5;
+  float visibility = valid ? floor(clamp(t.r, 0.0, 1.0) * 254.0 + 0.5) : 255.0;
+  float flags = valid ? clamp(floor(t.g - 0.5), 0.0, 31.0) : 0.0;
   float distance = t.b > 0.0
     ? clamp(floor((log2(t.b) - vtkShadowLogNear) * vtkShadowCodesPerLog + 1.5), 1.0, 2047.0)
     : 0.0;
-  return hardLit + visibility * 2048.0 + distance;
+  return flags * 524288.0 + visibility * 2048.0 + distance;
+}
+
+// A penumbra `width` buffer pixels wide on its receiver, in 4 bits: 0 for
+// none (under a pixel and a half), else k in [1, 15] for 2^(k/2) pixels.
+float vtkShadowWidthCode(float width)
+{
+  return width >= 1.5 ? clamp(floor(2.0 * log2(width) + 0.5), 1.0, 15.0) : 0.0;
 }
 
 // This pixel. From texCoord rather than gl_FragCoord so that every pass uses
