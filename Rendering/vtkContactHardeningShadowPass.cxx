@@ -75,6 +75,8 @@ public:
   std::vector<float> PassInverseVariances; // 1 / each pass's variance
   std::vector<float> FrameTaps;            // this frame's Taps(PoissonTaps)
   bool Unsupported = false;
+  bool PrepareCarriesWidths = false; // how the prepare pass was built
+
   // Section 3.1: up to 64 Poisson-disk points in [-1,1]^2, the first at the
   // origin.
   std::vector<glm::vec2> Poisson = vtkShadowSampling::PoissonDisk(MaximumTaps, 7, false, true);
@@ -175,8 +177,15 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
     return false;
   }
 
+  // Only receivers that refine read the penumbra widths: the prepare pass
+  // codes them (a log2 a pixel) only then.
+  if (in.Prepare && in.PrepareCarriesWidths != this->RefineUnresolved)
+  {
+    in.Prepare.reset();
+  }
+  in.PrepareCarriesWidths = this->RefineUnresolved;
   const std::string common = vtkContactCommonFS;
-  auto build = [&](std::unique_ptr<vtkOpenGLQuadHelper>& quad, const char* source)
+  auto build = [&](std::unique_ptr<vtkOpenGLQuadHelper>& quad, const std::string& source)
   {
     if (!quad)
     {
@@ -185,9 +194,11 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
     return quad->Program != nullptr;
   };
   if (!build(in.Tiles, vtkContactTilesFS) || !build(in.TileSpread, vtkContactTileSpreadFS) ||
-    !build(in.Prepare, vtkContactPrepareFS) || !build(in.MultiPass, vtkContactMultiPassFS) ||
-    !build(in.PCF, vtkContactPCFFS) || !build(in.Gaussian, vtkContactGaussianFS) ||
-    !build(in.Resolve, vtkContactResolveFS))
+    !build(in.Prepare,
+      std::string("#define CONTACT_WIDTHS ") + (this->RefineUnresolved ? "1" : "0") + "\n" +
+        vtkContactPrepareFS) ||
+    !build(in.MultiPass, vtkContactMultiPassFS) || !build(in.PCF, vtkContactPCFFS) ||
+    !build(in.Gaussian, vtkContactGaussianFS) || !build(in.Resolve, vtkContactResolveFS))
   {
     vtkErrorMacro("Could not build the contact-hardening shaders.");
     in.Unsupported = true;

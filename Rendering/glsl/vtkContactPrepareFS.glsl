@@ -18,7 +18,9 @@ uniform int contactTapCount;
 uniform sampler2D contactTiles;
 uniform int contactTileSize;
 uniform float contactSmallestD;
-// The penumbra's width in pixels on the receiver for a D: a kernel's
+// CONTACT_WIDTHS (compiled in): code the penumbra's width for receivers
+// that refine (vtkShadowScreenRefine()). Its width in pixels on the
+// receiver for a D: a kernel's
 // (clamped to the maximum), or, counting multi-pass blurs, 4 sigma of their
 // summed variances (contactPassVariances[k]: that of k passes).
 uniform bool contactCountsPasses;
@@ -70,7 +72,11 @@ void main()
   d = d >= contactSmallestD ? d : 0.0;
   // g: blurred, with the flags of the receivers' guided lookup: on which
   // side of its hard edge the pixel lies, and its penumbra's width.
+#if CONTACT_WIDTHS
   float flags = c.r + 2.0 * vtkShadowWidthCode(vtkContactWidth(d));
+#else
+  float flags = c.r;
+#endif
   vec4 texel = vec4(c.r, d > 0.0 ? 1.0 + flags : 0.0, c.b, d);
   gl_FragData[0] = texel;
   gl_FragData[1] = vec4(vtkShadowPackTexel(texel));
