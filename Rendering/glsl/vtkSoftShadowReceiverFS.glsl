@@ -146,8 +146,14 @@ float vtkShadowScreenVisibility(sampler2D screen, float hard)
   // lower right, lower left; reordered to lower left, lower right, upper
   // left, upper right.
   vec4 codes = textureGather(screen, vtkShadowScreenCorner).wzxy;
-  vec4 flags = floor(codes / 524288.0);
-  codes -= flags * 524288.0;
+#ifdef VTK_SHADOW_SCREEN_GUIDED
+  vec4 lit = vec4(lessThan(codes, vec4(0.0)));
+  codes = abs(codes);
+#endif
+#ifdef VTK_SHADOW_SCREEN_REFINE
+  vec4 code = floor(codes / 524288.0); // the penumbra's width
+  codes -= code * 524288.0;
+#endif
   vec4 visibility = floor(codes / 2048.0);
   vec4 distances = codes - 2048.0 * visibility;
   vec4 valid = vec4(notEqual(visibility, vec4(255.0)));
@@ -156,13 +162,11 @@ float vtkShadowScreenVisibility(sampler2D screen, float hard)
     vec4(greaterThan(distances, vec4(0.0)));
   vec4 values = mix(vec4(hard), visibility / 254.0, valid);
 #ifdef VTK_SHADOW_SCREEN_GUIDED
-  vec4 lit = mod(flags, 2.0);
   vec4 across = abs(lit - (hard >= 0.5 ? 1.0 : 0.0)) * valid;
   vec4 keep = 1.0 - across * (1.0 - clamp(abs(values - lit) * 2.0, 0.0, 1.0));
 #ifdef VTK_SHADOW_SCREEN_REFINE
   // The texels' penumbra width (vtkShadowWidthCode()) where they have one;
   // exp2 of the mean code, one exp2 rather than four.
-  vec4 code = floor(flags * 0.5);
   vec4 widths = weights * valid * vec4(greaterThan(code, vec4(0.0)));
   float wide = dot(widths, vec4(1.0));
   vtkShadowScreenRadius =
