@@ -487,13 +487,16 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
       program->SetUniformi("contactDilation", this->Dilation ? 1 : 0);
       // D counts passes (a fraction blends the last in) or kernel pixels.
       program->SetUniformf("contactSmallestD", this->Variant == MultiPass ? 0.01f : 1.5f);
-      program->SetUniformi("contactCountsPasses", this->Variant == MultiPass ? 1 : 0);
-      program->SetUniformi("contactMaximumKernel", this->MaximumKernelSize);
-      // Summed variances of 0 .. 64 passes (those past the limit add none).
-      std::vector<float> variances(in.PassStarts);
-      variances.push_back(in.PassStarts.back() + 1.0f / in.PassInverseVariances.back());
-      variances.resize(65, variances.back());
-      program->SetUniform1fv("contactPassVariances", 65, variances.data());
+      if (this->RefineUnresolved) // CONTACT_WIDTHS
+      {
+        program->SetUniformi("contactCountsPasses", this->Variant == MultiPass ? 1 : 0);
+        program->SetUniformi("contactMaximumKernel", this->MaximumKernelSize);
+        // Summed variances of 0 .. 64 passes (those past the limit add none).
+        std::vector<float> variances(in.PassStarts);
+        variances.push_back(in.PassStarts.back() + 1.0f / in.PassInverseVariances.back());
+        variances.resize(65, variances.back());
+        program->SetUniform1fv("contactPassVariances", 65, variances.data());
+      }
       const std::vector<float> dilationTaps = ScaledTaps(taps, this->DilationSize);
       program->SetUniform3fv("contactTaps", this->PoissonTaps, dilationTaps.data());
       program->SetUniformi("contactTapCount", this->PoissonTaps);

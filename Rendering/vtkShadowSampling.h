@@ -107,14 +107,6 @@ inline std::vector<glm::dvec2> StratifiedDisc(int count, unsigned int seed)
   return samples;
 }
 
-/**
- * Points in the unit ball whose projection along any direction is uniform
- * on the unit disc, as a spherical light's is from every receiver: the
- * first three coordinates of points uniform on the 3-sphere in 4D (a plane
- * projection of which is uniform on the disc, Archimedes' theorem one
- * dimension up). x, y are StratifiedDisc(), seen along z exactly that disc;
- * z = sqrt(1 - x^2 - y^2) cos(2 pi w), w stratified over a shuffle.
- */
 /// The radical inverse of i in `base`: Halton's sequence.
 inline double RadicalInverse(unsigned int i, unsigned int base)
 {

@@ -18,11 +18,13 @@ uniform int contactTapCount;
 uniform sampler2D contactTiles;
 uniform int contactTileSize;
 uniform float contactSmallestD;
-// CONTACT_WIDTHS (compiled in): code the penumbra's width for receivers
-// that refine (vtkShadowScreenRefine()). Its width in pixels on the
-// receiver for a D: a kernel's
-// (clamped to the maximum), or, counting multi-pass blurs, 4 sigma of their
-// summed variances (contactPassVariances[k]: that of k passes).
+
+#if CONTACT_WIDTHS
+// Compiled in for receivers that refine (vtkShadowScreenRefine()): the
+// penumbra's width in pixels on the receiver for a D, coded with the
+// pixel. A kernel's (clamped to the maximum), or, counting multi-pass
+// blurs, 4 sigma of their summed variances (contactPassVariances[k]: that
+// of k passes).
 uniform bool contactCountsPasses;
 uniform int contactMaximumKernel;
 uniform float contactPassVariances[65];
@@ -36,6 +38,7 @@ float vtkContactWidth(float d)
   }
   return min(d, float(contactMaximumKernel));
 }
+#endif
 
 void main()
 {
