@@ -6,6 +6,7 @@ set(softshadows_rendering_classes
   vtkOmnidirectionalShadowPass
   vtkRayCastLightVisibility
   vtkReferenceShadowPass
+  vtkSilhouetteShadowPass
   vtkSoftShadowPass)
 
 # The framework the techniques stand on: installed, so that a technique can
@@ -50,6 +51,9 @@ set(softshadows_rendering_shaders
   vtkShadowPackFS
   vtkShadowScreenCommonFS
   vtkShadowSurfaceFS
+  vtkSilhouetteEdgesFS
+  vtkSilhouetteEdgesVS
+  vtkSilhouetteLookupFS
   vtkSoftShadowReceiverFS)
 
 # Sets <sources_var> and <headers_var> to the generated C strings of the

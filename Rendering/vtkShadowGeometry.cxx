@@ -36,11 +36,12 @@ void vtkShadowGeometry::SetShaders(
 }
 
 //------------------------------------------------------------------------------
-bool vtkShadowGeometry::Upload()
+void vtkShadowGeometry::Upload(vtkShaderProgram* program)
 {
-  if (this->Input && this->UploadTime >= this->Input->GetMTime() && this->VAO)
+  if (this->Input && this->UploadTime >= this->Input->GetMTime() && this->VAO &&
+    program == this->BoundProgram)
   {
-    return true;
+    return;
   }
   this->Attributes.clear();
   this->Vertices = 0;
@@ -52,7 +53,7 @@ bool vtkShadowGeometry::Upload()
   this->VAO->ShaderProgramChanged();
   if (!this->Input)
   {
-    return true;
+    return;
   }
   this->UploadTime = this->Input->GetMTime();
 
@@ -79,8 +80,13 @@ bool vtkShadowGeometry::Upload()
   }
   this->Vertices = static_cast<int>(corners.size());
 
+  // Attributes the shaders do not use are neither uploaded nor bound.
   auto add = [&](const std::string& name, vtkDataArray* array, int first, int components)
   {
+    if (!program->IsAttributeUsed(name.c_str()))
+    {
+      return;
+    }
     std::vector<float> values;
     values.reserve(corners.size() * components);
     for (vtkIdType id : corners)
@@ -126,13 +132,31 @@ bool vtkShadowGeometry::Upload()
       add(array->GetName(), array, 0, components);
     }
   }
-  return true;
+  this->VAO->Bind();
+  for (const Attribute& a : this->Attributes)
+  {
+    this->VAO->AddAttributeArray(
+      program, a.Buffer, a.Name, 0, sizeof(float) * a.Components, VTK_FLOAT, a.Components, false);
+  }
+  this->VAO->Release();
+  this->BoundProgram = program;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkShadowGeometry::GetUploadedBytes() const
+{
+  vtkIdType bytes = 0;
+  for (const Attribute& a : this->Attributes)
+  {
+    bytes += static_cast<vtkIdType>(sizeof(float)) * a.Components * this->Vertices;
+  }
+  return bytes;
 }
 
 //------------------------------------------------------------------------------
 bool vtkShadowGeometry::Draw(vtkOpenGLRenderWindow* context, const glm::dmat4& worldToClip)
 {
-  if (!this->Upload() || this->Vertices == 0)
+  if (!this->Input || this->Input->GetNumberOfPolys() == 0)
   {
     return true; // nothing to draw
   }
@@ -142,20 +166,10 @@ bool vtkShadowGeometry::Draw(vtkOpenGLRenderWindow* context, const glm::dmat4& w
   {
     return false;
   }
-  if (program != this->BoundProgram)
+  this->Upload(program);
+  if (this->Vertices == 0)
   {
-    this->VAO->ShaderProgramChanged();
-    this->VAO->Bind();
-    for (const Attribute& a : this->Attributes)
-    {
-      // Attributes the shaders do not use are skipped.
-      if (program->IsAttributeUsed(a.Name.c_str()))
-      {
-        this->VAO->AddAttributeArray(program, a.Buffer, a.Name, 0, sizeof(float) * a.Components,
-          VTK_FLOAT, a.Components, false);
-      }
-    }
-    this->BoundProgram = program;
+    return true;
   }
   const glm::mat4 modelToClip(worldToClip * this->ModelToWorld);
   const glm::mat4 modelToWorld(this->ModelToWorld);

@@ -10,7 +10,8 @@
  * components (three vec3, as vtkTopologyAwareMeshFilter writes) the three
  * vec3 attributes `<name>0`, `<name>1`, `<name>2`. Triangles are drawn as
  * they come (3 vertices each, no index buffer: a TAM's vertices are per face
- * anyway). The data is uploaded on the first Draw() after it changed.
+ * anyway). The data is uploaded on the first Draw() after it changed, only
+ * the attributes the shaders use.
  *
  * The shaders are the technique's, each beginning with //VTK::System::Dec;
  * they declare what they use of `uniform mat4 vtkShadowModelToClip` (model
@@ -57,6 +58,9 @@ public:
   /// Number of vertices drawn (3 a triangle).
   int GetNumberOfVertices() const { return this->Vertices; }
 
+  /// Bytes of the vertex buffers on the GPU: the attributes the shaders use.
+  vtkIdType GetUploadedBytes() const;
+
   /// Draw with `worldToClip` (the draw's frustum). False if the shaders fail.
   bool Draw(vtkOpenGLRenderWindow* context, const glm::dmat4& worldToClip);
 
@@ -66,7 +70,7 @@ private:
   vtkShadowGeometry(const vtkShadowGeometry&) = delete;
   void operator=(const vtkShadowGeometry&) = delete;
 
-  bool Upload();
+  void Upload(vtkShaderProgram* program);
 
   struct Attribute
   {

@@ -176,6 +176,10 @@ public:
       // textureGather (vtkShadowScreenVisibility) in the mappers' GLSL 1.50.
       sources.AddFragmentExtension("GL_ARB_texture_gather");
     }
+    for (const std::string& extension : this->Pass->GetReceiverExtensions())
+    {
+      sources.AddFragmentExtension(extension);
+    }
     // Shaders without lighting (no tags) are not shadowed: no word needed.
     vtkShadowShaderSources::Before(sources.Fragment, LightDec, ShadowDec);
     vtkShadowShaderSources::Before(sources.Fragment, LightImpl, ShadowImpl);

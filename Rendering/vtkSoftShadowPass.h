@@ -309,6 +309,12 @@ protected:
   virtual std::string GetVisibilityDeclarations() { return std::string(); }
 
   /**
+   * GLSL extensions the technique's receiver code needs in the mappers'
+   * GLSL 1.50 fragment shaders (e.g. "GL_ARB_texture_gather"). Default: none.
+   */
+  virtual std::vector<std::string> GetReceiverExtensions() const { return {}; }
+
+  /**
    * GLSL expression for the visibility (1 lit, 0 umbra) of shadowed light
    * `slot` at `vtkShadowPositionWC`. Default: the framework's hard lookup in
    * the light's depth map with GetPCFRadius(), or, when UsesScreenSpace(),

@@ -4,6 +4,7 @@
 #include "vtkHardShadowPass.h"
 #include "vtkOmnidirectionalShadowPass.h"
 #include "vtkReferenceShadowPass.h"
+#include "vtkSilhouetteShadowPass.h"
 #include "vtkSoftShadowPass.h"
 
 #include <vtkCameraPass.h>
@@ -328,6 +329,61 @@ const std::vector<Technique>& Techniques()
         else
         {
           pass->SetFilterToPoisson();
+        }
+        return Wrap(pass);
+      } },
+    { "silhouette",
+      "vtkSilhouetteShadowPass: silhouette-distance shadow maps (Valient & Bujnak): the signed "
+      "distance to the nearest silhouette, drawn from topology aware meshes, anti-aliases the "
+      "shadow map's edges and sizes penumbrae from the light's radius",
+      { { "soft", "four samples, penumbrae from the light's radius" },
+        { "hard", "one sample: anti-aliased hard shadows" } },
+      WithCommonParameters({
+        Bind<vtkSilhouetteShadowPass, double>("expected_width", ValueType::Number,
+          Range::Between(0.0, 256.0),
+          "expected silhouette width in shadow-map texels; 0 sizes it from the light (twice the "
+          "widest penumbra; 2 for hard shadows)",
+          &vtkSilhouetteShadowPass::SetExpectedWidth, &vtkSilhouetteShadowPass::GetExpectedWidth),
+        Bind<vtkSilhouetteShadowPass, double>("edge_width", ValueType::Number,
+          Range::Between(0.01, 16.0),
+          "texels over which a hard edge goes from lit to shadowed (its anti-aliasing)",
+          &vtkSilhouetteShadowPass::SetEdgeWidth, &vtkSilhouetteShadowPass::GetEdgeWidth),
+        Bind<vtkSilhouetteShadowPass, double>("max_penumbra", ValueType::Number,
+          Range::Between(1.0, 128.0),
+          "soft: widest penumbra half-width kept, in texels (wider ones are clamped)",
+          &vtkSilhouetteShadowPass::SetMaximumPenumbra,
+          &vtkSilhouetteShadowPass::GetMaximumPenumbra),
+        Bind<vtkSilhouetteShadowPass, double>("sample_spread", ValueType::Number,
+          Range::Between(0.0, 0.8),
+          "soft: distance of the three outer samples from the point, in penumbra half-widths",
+          &vtkSilhouetteShadowPass::SetSampleSpread, &vtkSilhouetteShadowPass::GetSampleSpread),
+        Bind<vtkSilhouetteShadowPass, int>("lookup_texels", ValueType::Integer,
+          Range::Between(8, 4096), "lookup texture texels per segment of eq. 4",
+          &vtkSilhouetteShadowPass::SetLookupTexels, &vtkSilhouetteShadowPass::GetLookupTexels),
+        Bind<vtkSilhouetteShadowPass, int>("lookup_rows", ValueType::Integer,
+          Range::Between(2, 1024), "soft: lookup texture rows, one penumbra width each",
+          &vtkSilhouetteShadowPass::SetLookupRows, &vtkSilhouetteShadowPass::GetLookupRows),
+        Bind<vtkSilhouetteShadowPass, bool>("drop_non_silhouette_faces", ValueType::Boolean,
+          Range::Any(),
+          "for casters that do not change shape: leave faces that can never be on a silhouette "
+          "out of their topology aware meshes",
+          &vtkSilhouetteShadowPass::SetDropNonSilhouetteFaces,
+          &vtkSilhouetteShadowPass::GetDropNonSilhouetteFaces),
+        Bind<vtkSilhouetteShadowPass, bool>("debug_view", ValueType::Boolean, Range::Any(),
+          "show the signed distance map where receivers look it up (0.5 on a silhouette, "
+          "darker on the occluder's side)",
+          &vtkSilhouetteShadowPass::SetDebugView, &vtkSilhouetteShadowPass::GetDebugView),
+      }),
+      [](const std::string& variant)
+      {
+        auto pass = vtkSmartPointer<vtkSilhouetteShadowPass>::New();
+        if (variant == "hard")
+        {
+          pass->SetVariantToHard();
+        }
+        else
+        {
+          pass->SetVariantToSoft();
         }
         return Wrap(pass);
       } },

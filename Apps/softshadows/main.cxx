@@ -10,6 +10,7 @@
 #include "Techniques.h"
 
 #include "vtkContactHardeningShadowPass.h"
+#include "vtkSilhouetteShadowPass.h"
 
 #include "vtkSoftShadowPass.h"
 
@@ -51,7 +52,8 @@ their parameters. Rendering needs an X display: run under `xvfb-run -a`.
                every SPEC, one a line
   render       draw the scene to FILE (default <scene name>-<technique>.png);
                --shadow-only writes light I's visibility as grey + alpha;
-               --debug-view marks umbra and penumbra (technique contact)
+               --debug-view marks umbra and penumbra (contact) or shows the
+               signed distance map (silhouette)
   bench        time the techniques in one window, frames interleaved, the first
                light moving; `hard` is added if missing; --json prints one JSON
                object per technique and line
@@ -206,14 +208,20 @@ int Render(const std::vector<std::string>& arguments)
   TechniqueInstance& technique = session.Techniques.front();
   if (line.Has("--debug-view"))
   {
-    // The paper's figure 4 view; only the contact technique has one.
-    auto* contact = vtkContactHardeningShadowPass::SafeDownCast(technique.Shadows);
-    if (!contact)
+    // contact: the paper's figure 4 view; silhouette: the signed distance map.
+    if (auto* contact = vtkContactHardeningShadowPass::SafeDownCast(technique.Shadows))
+    {
+      contact->DebugViewOn();
+    }
+    else if (auto* silhouette = vtkSilhouetteShadowPass::SafeDownCast(technique.Shadows))
+    {
+      silhouette->DebugViewOn();
+    }
+    else
     {
       throw InputError("--debug-view",
-        "technique '" + technique.Spec + "' has no debug view (only contact has one)");
+        "technique '" + technique.Spec + "' has no debug view (contact and silhouette have one)");
     }
-    contact->DebugViewOn();
   }
   if (shadowOnly)
   {

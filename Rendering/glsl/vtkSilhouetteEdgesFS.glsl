@@ -1,0 +1,69 @@
+//VTK::System::Dec
+//VTK::Output::Dec
+// Pass 2's fragments (Valient & Bujnak, section 2.1.1): keep only the thick
+// silhouette, and write the signed distance to its nearest point (texels,
+// positive on the face's side) and that point's depth. The paper's
+// LESS-EQUAL depth and distance tests become one depth test on a key: the
+// silhouette nearest in the map wins, and of two as near the nearer to the
+// light. (Depth first lets a silhouette nearer the light take texels that
+// lie closer to another, which wide soft-shadow bands make common: on a
+// fence, a picket's band covers its neighbours'.)
+// Uses: vtkSilhouetteEdgesVS.glsl (its outputs).
+
+flat in vec3 silhouetteCorner[3];
+flat in int silhouetteEdges;
+uniform float silhouetteHalfWidth;  // w_sc, texels
+uniform sampler2DShadow silhouetteDepthMap; // pass 1's depth map (nearest)
+
+out vec4 fragOutput0; // r: signed distance (texels), g: the silhouette point's depth
+
+float silhouetteCross(vec2 a, vec2 b, vec2 p)
+{
+  return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+}
+
+void main()
+{
+  vec2 p = gl_FragCoord.xy;
+  float nearest = 1.0e30;
+  float depth = 1.0;
+  float side = 0.0;
+  bool corner = false;
+  for (int k = 0; k < 3; ++k)
+  {
+    if ((silhouetteEdges & (1 << k)) == 0)
+    {
+      continue;
+    }
+    vec3 a = silhouetteCorner[k], b = silhouetteCorner[(k + 1) % 3];
+    vec2 ab = b.xy - a.xy;
+    float t = dot(p - a.xy, ab) / max(dot(ab, ab), 1.0e-12);
+    float d = distance(p, a.xy + clamp(t, 0.0, 1.0) * ab);
+    if (d < nearest)
+    {
+      nearest = d;
+      depth = mix(a.z, b.z, clamp(t, 0.0, 1.0)); // depth is affine along a projected line
+      corner = t <= 0.0 || t >= 1.0;
+      // Inside is the side of the edge's line the face lies on: the face
+      // may be far narrower than the thick silhouette.
+      float face = silhouetteCross(a.xy, b.xy, silhouetteCorner[(k + 2) % 3].xy);
+      side = abs(face) < 1.0e-6 ? 0.0 : (silhouetteCross(a.xy, b.xy, p) * face >= 0.0 ? 1.0 : -1.0);
+    }
+  }
+  if (nearest > silhouetteHalfWidth)
+  {
+    discard; // outside the thick silhouette
+  }
+  if (corner || side == 0.0)
+  {
+    // Nearest to a corner of the silhouette, one edge's side is not the
+    // silhouette's (beside a sharp convex corner it says inside), and a face
+    // seen edge-on has no side: there the depth map tells, at this texel's
+    // centre as it was rasterized: covered by a surface not behind the
+    // silhouette is inside.
+    side = texture(silhouetteDepthMap, vec3(p / vec2(textureSize(silhouetteDepthMap, 0)), depth)) > 0.5
+      ? -1.0 : 1.0;
+  }
+  fragOutput0 = vec4(side > 0.0 ? nearest : -nearest, depth, 0.0, 1.0);
+  gl_FragDepth = 0.99 * nearest / silhouetteHalfWidth + 0.01 * clamp(depth, 0.0, 1.0);
+}

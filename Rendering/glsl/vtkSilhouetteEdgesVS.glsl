@@ -1,0 +1,100 @@
+//VTK::System::Dec
+// Pass 2 of silhouette-distance shadow maps (Valient & Bujnak, section
+// 2.1.1), over a topology aware mesh (vtkTopologyAwareMeshFilter): each
+// vertex finds its face's silhouette edges from the light, collapses faces
+// without one, and grows the face about its incenter so that it covers the
+// thick silhouette around its edges. Everything after the edge test is in
+// the map's texel space (the viewport is the map).
+// Uses: nothing else.
+
+in vec3 FacePositions0; // V1, V2, V3: the face's corners, model space
+in vec3 FacePositions1;
+in vec3 FacePositions2;
+in vec3 AdjacentNormals0; // across V1V2, V2V3, V3V1; -n_f at a border
+in vec3 AdjacentNormals1;
+in vec3 AdjacentNormals2;
+
+uniform mat4 vtkShadowModelToClip;
+uniform vec4 silhouetteLightMC;  // w = 1: the light's position; w = 0: towards the light
+uniform float silhouetteMapSize; // texels across the map
+uniform float silhouetteHalfWidth; // w_sc: half the minimum silhouette width, texels
+
+flat out vec3 silhouetteCorner[3]; // the face's corners: texel x, y and depth in [0, 1]
+flat out int silhouetteEdges;      // bit k: edge V(k)V(k+1) is a silhouette
+
+// Eq. 1: an edge is a silhouette when the face and its neighbour face the
+// light differently, both seen from the edge's midpoint (so that the two
+// faces of an edge agree).
+bool silhouetteEdge(vec3 a, vec3 b, vec3 face, vec3 neighbour)
+{
+  vec3 v = silhouetteLightMC.w > 0.0 ? silhouetteLightMC.xyz - 0.5 * (a + b) : silhouetteLightMC.xyz;
+  return (dot(face, v) > 0.0) != (dot(neighbour, v) > 0.0);
+}
+
+void main()
+{
+  vec3 p[3] = vec3[3](FacePositions0, FacePositions1, FacePositions2);
+  vec3 face = cross(p[1] - p[0], p[2] - p[0]);
+  int edges = (silhouetteEdge(p[0], p[1], face, AdjacentNormals0) ? 1 : 0) |
+    (silhouetteEdge(p[1], p[2], face, AdjacentNormals1) ? 2 : 0) |
+    (silhouetteEdge(p[2], p[0], face, AdjacentNormals2) ? 4 : 0);
+
+  vec2 t[3];
+  bool behind = false;
+  for (int k = 0; k < 3; ++k)
+  {
+    vec4 clip = vtkShadowModelToClip * vec4(p[k], 1.0);
+    behind = behind || clip.w <= 0.0;
+    vec3 ndc = clip.xyz / clip.w;
+    t[k] = (0.5 * ndc.xy + 0.5) * silhouetteMapSize;
+    silhouetteCorner[k] = vec3(t[k], 0.5 * ndc.z + 0.5);
+  }
+  silhouetteEdges = edges;
+  // The corner this vertex is: the TAM's vertices come in face order.
+  int corner = gl_VertexID % 3;
+  if (edges == 0 || behind)
+  {
+    // No silhouette (or a face through the light's eye plane): one point in
+    // front of the near plane, rejected before rasterization.
+    gl_Position = vec4(0.0, 0.0, -2.0, 1.0);
+    return;
+  }
+
+  // Degenerate after projection (inradius under half a texel diagonal):
+  // move the corner opposite the longest edge away from it, against that
+  // edge's outward normal, until the face is a texel diagonal high. Before
+  // the incenter and the scaling.
+  const float halfDiagonal = 0.70710678;
+  float len[3] = float[3](distance(t[1], t[2]), distance(t[2], t[0]), distance(t[0], t[1]));
+  float perimeter = len[0] + len[1] + len[2];
+  float area2 = abs((t[1].x - t[0].x) * (t[2].y - t[0].y) - (t[2].x - t[0].x) * (t[1].y - t[0].y));
+  if (area2 < halfDiagonal * perimeter) // inradius = area2 / perimeter
+  {
+    int o = len[0] >= len[1] && len[0] >= len[2] ? 0 : (len[1] >= len[2] ? 1 : 2);
+    vec2 a = t[(o + 1) % 3], b = t[(o + 2) % 3];
+    vec2 along = len[o] > 1.0e-6 ? (b - a) / len[o] : vec2(1.0, 0.0);
+    vec2 away = vec2(-along.y, along.x);
+    float side = dot(t[o] - a, away);
+    away *= side < 0.0 ? -1.0 : 1.0;
+    // Height 2 * halfDiagonal * 2: inradius of about a half diagonal for
+    // the thin triangle (height / 2 for a sliver).
+    t[o] += away * max(4.0 * halfDiagonal - abs(side), 0.0);
+    if (len[o] < 1.0e-6)
+    {
+      // A face collapsed to a point: give it a base as well.
+      t[(o + 1) % 3] -= along * 2.0 * halfDiagonal;
+      t[(o + 2) % 3] += along * 2.0 * halfDiagonal;
+    }
+    len = float[3](distance(t[1], t[2]), distance(t[2], t[0]), distance(t[0], t[1]));
+    perimeter = len[0] + len[1] + len[2];
+    area2 = abs((t[1].x - t[0].x) * (t[2].y - t[0].y) - (t[2].x - t[0].x) * (t[1].y - t[0].y));
+  }
+
+  // Eq. 2: scale about the incenter by f = (w_o + w_sc) / w_o, which moves
+  // every edge out by w_sc.
+  vec2 incenter = (len[0] * t[0] + len[1] * t[1] + len[2] * t[2]) / perimeter;
+  float inradius = area2 / perimeter;
+  float f = (inradius + silhouetteHalfWidth) / inradius;
+  vec2 grown = incenter + f * (t[corner] - incenter);
+  gl_Position = vec4(grown / silhouetteMapSize * 2.0 - 1.0, 0.0, 1.0);
+}

@@ -1,0 +1,393 @@
+#include "vtkSilhouetteShadowPass.h"
+
+#include "vtkCellArray.h"
+#include "vtkCleanPolyData.h"
+#include "vtkLight.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkShadowCasterRegistry.h"
+#include "vtkShadowDrawer.h"
+#include "vtkShadowGeometry.h"
+#include "vtkShadowMapManager.h"
+#include "vtkShadowScreenBuffers.h"
+#include "vtkTextureObject.h"
+#include "vtkTopologyAwareMeshFilter.h"
+#include "vtk_glew.h"
+
+#include "vtkSilhouetteEdgesFS.h"
+#include "vtkSilhouetteEdgesVS.h"
+#include "vtkSilhouetteLookupFS.h"
+
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <vector>
+
+namespace
+{
+constexpr double Diagonal = 1.4142135623730951; // a texel's diagonal, in texels
+constexpr float ClearDistance = -1.0e4f;        // no silhouette near: far outside
+
+// What the pass keeps of each caster's polydata.
+struct CasterMesh
+{
+  vtkSmartPointer<vtkTopologyAwareMeshFilter> Filter;
+  std::shared_ptr<vtkShadowGeometry> Geometry;
+  bool Dropped = false; ///< built with DropNonSilhouetteFaces
+};
+
+// The fraction of a disc of unit radius on the lit side of a straight edge
+// at signed distance u (u > 0: the centre is on the occluder's side): the
+// penumbra profile of a spherical light behind a straight silhouette.
+double DiscLit(double u)
+{
+  u = std::min(std::max(u, -1.0), 1.0);
+  return (std::acos(u) - u * std::sqrt(1.0 - u * u)) / 3.14159265358979323846;
+}
+}
+
+// Per light slot: what the receivers need, and the lookup it was built for.
+struct vtkSilhouetteShadowPass::Internals
+{
+  struct Band
+  {
+    float Range[4] = { 0.0f, 1.0f, 0.0f, 0.0f }; ///< near, far, parallel, K
+    float HalfWidth = 1.0f;                      ///< W: distances kept within it
+    float MaximumPenumbra = 1.0f;                ///< Wmax
+    std::vector<double> LookupKey;               ///< what the slot's lookup was built for
+  };
+  std::vector<Band> Bands;
+  vtkShadowCasterCache<CasterMesh> Meshes;
+};
+
+vtkStandardNewMacro(vtkSilhouetteShadowPass);
+
+vtkSilhouetteShadowPass::vtkSilhouetteShadowPass()
+  : Internal(new Internals)
+{
+}
+vtkSilhouetteShadowPass::~vtkSilhouetteShadowPass() = default;
+
+namespace
+{
+// The lookup texture of section 2.2 (eq. 4's four segments side by side,
+// `texels` each) with `rows` penumbra widths from 0 to `widest` texels:
+//   z_E behind the point:           lit | shadow-map shadow
+//   z_E in front, shadow map lit:   the profile of distance d
+//   z_E in front, shadow map dark:  the profile's inner half (d >= 0), else
+//                                   shadow (another occluder's)
+// Each outer sample of the soft variant lies `spread` half-widths off the
+// point, which widens the mean of the four samples; their profiles are
+// narrowed by sqrt(1 - 1.5 spread^2) so that the mean keeps the disc's second
+// moment.
+std::vector<float> BuildLookup(
+  int texels, int rows, double halfWidth, double widest, double edgeWidth, double spread)
+{
+  std::vector<float> values(static_cast<size_t>(4 * texels) * rows);
+  const double narrow = std::sqrt(std::max(1.0 - 1.5 * spread * spread, 0.0));
+  for (int row = 0; row < rows; ++row)
+  {
+    const double width = rows > 1 ? widest * row / (rows - 1) : 0.0;
+    const double radius = std::max(width * narrow, 0.5 * edgeWidth);
+    float* line = &values[static_cast<size_t>(4 * texels) * row];
+    for (int j = 0; j < texels; ++j)
+    {
+      const double d = (2.0 * j / (texels - 1) - 1.0) * halfWidth;
+      const float profile = static_cast<float>(DiscLit(d / radius));
+      line[j] = 1.0f;
+      line[texels + j] = 0.0f;
+      line[2 * texels + j] = profile;
+      line[3 * texels + j] = d >= 0.0 ? profile : 0.0f;
+    }
+  }
+  return values;
+}
+}
+
+//------------------------------------------------------------------------------
+bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
+{
+  // Pass 1: depth, as `hard` draws it.
+  if (!this->RenderLightDepthMaps(s, false))
+  {
+    return false;
+  }
+  auto* context = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
+  auto& lights = this->Maps->GetLights();
+  const bool soft = this->Variant == Soft;
+
+  // Each caster's TAM, rebuilt only when its polydata changes. Casters
+  // without polygons have none: their depth-map shadow is all they cast.
+  std::vector<std::pair<const vtkShadowCaster*, vtkShadowGeometry*>> meshes;
+  this->TopologyAwareMeshVertices = 0;
+  for (const vtkShadowCaster& caster : this->Casters->GetCasters())
+  {
+    if (caster.Data->GetNumberOfPolys() + caster.Data->GetNumberOfStrips() == 0)
+    {
+      continue;
+    }
+    CasterMesh& mesh = this->Internal->Meshes.Get(caster, [](vtkPolyData*, CasterMesh&) {});
+    if (!mesh.Geometry || mesh.Dropped != this->DropNonSilhouetteFaces)
+    {
+      // Faces meet where they share a point id: merge coincident points
+      // first (meshes drawn with flat normals, seams of parametric surfaces
+      // a rounding apart), or every edge there would be a border, always a
+      // silhouette.
+      vtkNew<vtkCleanPolyData> clean;
+      clean->SetInputData(caster.Data);
+      clean->SetTolerance(1.0e-6); // of the bounding box's diagonal
+      clean->ConvertLinesToPointsOff();
+      clean->ConvertPolysToLinesOff();
+      clean->ConvertStripsToPolysOff();
+      clean->Update();
+      // Faces only: lines and points have no silhouette to give.
+      auto faces = vtkSmartPointer<vtkPolyData>::New();
+      faces->SetPoints(clean->GetOutput()->GetPoints());
+      faces->SetPolys(clean->GetOutput()->GetPolys());
+      faces->SetStrips(clean->GetOutput()->GetStrips());
+      mesh.Filter = vtkSmartPointer<vtkTopologyAwareMeshFilter>::New();
+      mesh.Filter->SetInputData(faces);
+      mesh.Filter->SetDropNonSilhouetteFaces(this->DropNonSilhouetteFaces);
+      mesh.Filter->Update();
+      // Only what the silhouette pass reads goes to the GPU.
+      vtkPolyData* tam = mesh.Filter->GetOutput();
+      auto buffer = vtkSmartPointer<vtkPolyData>::New();
+      buffer->SetPoints(tam->GetPoints());
+      buffer->SetPolys(tam->GetPolys());
+      buffer->GetPointData()->AddArray(tam->GetPointData()->GetArray("FacePositions"));
+      buffer->GetPointData()->AddArray(tam->GetPointData()->GetArray("AdjacentNormals"));
+      // Released with the entry (a new polydata, or the caster gone).
+      mesh.Geometry = std::shared_ptr<vtkShadowGeometry>(new vtkShadowGeometry,
+        [](vtkShadowGeometry* geometry)
+        {
+          geometry->ReleaseGraphicsResources(nullptr);
+          delete geometry;
+        });
+      mesh.Geometry->SetInput(buffer);
+      mesh.Geometry->SetShaders(vtkSilhouetteEdgesVS, vtkSilhouetteEdgesFS);
+      mesh.Dropped = this->DropNonSilhouetteFaces;
+    }
+    mesh.Geometry->SetModelToWorld(caster.ModelToWorld);
+    meshes.emplace_back(&caster, mesh.Geometry.get());
+  }
+  this->Internal->Meshes.Prune(*this->Casters);
+
+  const auto start = std::chrono::steady_clock::now();
+  if (this->MeasureSilhouettePass)
+  {
+    glFinish();
+  }
+  auto& bands = this->Internal->Bands;
+  bands.resize(lights.size());
+  for (size_t slot = 0; slot < lights.size(); ++slot)
+  {
+    auto& light = lights[slot];
+    const vtkShadowFrustum& frustum = light.Map;
+    Internals::Band& band = bands[slot];
+
+    // The penumbra's half-width in texels is K (r - e) / (e r) behind a spot
+    // light (K = radius over a texel's size per unit of distance) and K (r -
+    // e) behind a directional one (K = tan of the angular radius over a
+    // texel's size); the widest is for an edge at the near plane over a
+    // receiver at the far one.
+    const double texel = (frustum.Parallel ? frustum.Footprint.x : frustum.Footprint.y) /
+      static_cast<double>(this->MapSize);
+    const double size = light.Directional ? std::tan(glm::radians(light.Radius)) : light.Radius;
+    const double k = soft ? size / texel : 0.0;
+    const double widest = frustum.Parallel ? k * (frustum.Far - frustum.Near)
+                                           : k * (1.0 / frustum.Near - 1.0 / frustum.Far);
+    band.Range[0] = static_cast<float>(frustum.Near);
+    band.Range[1] = static_cast<float>(frustum.Far);
+    band.Range[2] = frustum.Parallel ? 1.0f : 0.0f;
+    band.Range[3] = static_cast<float>(k);
+    band.MaximumPenumbra =
+      static_cast<float>(std::min(std::max(widest, 0.5 * this->EdgeWidth), this->MaximumPenumbra));
+    // Section 2.1.1: w_s = expected width + two texel diagonals, w_sc = w_s / 2.
+    const double expected = this->ExpectedWidth > 0.0
+      ? this->ExpectedWidth
+      : 2.0 * std::max<double>(soft ? band.MaximumPenumbra : 0.0, 1.0);
+    band.HalfWidth = static_cast<float>(0.5 * expected + Diagonal);
+
+    // The slot's textures: the silhouette map and the lookup.
+    if (light.Textures.size() < 2)
+    {
+      light.Textures.resize(2);
+    }
+    if (!light.Textures[0] || light.Textures[0]->GetWidth() != static_cast<unsigned>(this->MapSize))
+    {
+      light.Textures[0] =
+        vtkShadowScreenBuffers::NewFloatTexture(context, this->MapSize, this->MapSize, 2);
+      light.Textures[0]->SetMinificationFilter(vtkTextureObject::Linear);
+      light.Textures[0]->SetMagnificationFilter(vtkTextureObject::Linear);
+    }
+    const int rows = soft ? this->LookupRows : 1;
+    const std::vector<double> key = { static_cast<double>(this->LookupTexels),
+      static_cast<double>(rows), band.HalfWidth, band.MaximumPenumbra, this->EdgeWidth,
+      soft ? this->SampleSpread : 0.0 };
+    if (!light.Textures[1] || band.LookupKey != key)
+    {
+      std::vector<float> lookup = BuildLookup(this->LookupTexels, rows, band.HalfWidth,
+        band.MaximumPenumbra, this->EdgeWidth, soft ? this->SampleSpread : 0.0);
+      light.Textures[1] = vtkSmartPointer<vtkTextureObject>::New();
+      light.Textures[1]->SetContext(context);
+      light.Textures[1]->SetMinificationFilter(vtkTextureObject::Linear);
+      light.Textures[1]->SetMagnificationFilter(vtkTextureObject::Linear);
+      light.Textures[1]->SetWrapS(vtkTextureObject::ClampToEdge);
+      light.Textures[1]->SetWrapT(vtkTextureObject::ClampToEdge);
+      light.Textures[1]->SetInternalFormat(GL_R32F);
+      light.Textures[1]->SetFormat(GL_RED);
+      light.Textures[1]->SetDataType(GL_FLOAT);
+      light.Textures[1]->Create2DFromRaw(4 * this->LookupTexels, rows, 1, VTK_FLOAT, lookup.data());
+      band.LookupKey = key;
+    }
+
+    // Pass 2: the silhouettes of every caster's TAM, the light in each
+    // caster's model space.
+    vtkShadowDrawSetup setup;
+    setup.View = &light.Map;
+    setup.Colours = { light.Textures[0] };
+    setup.ClearColour[0] = ClearDistance;
+    setup.ClearColour[1] = 1.0f;
+    setup.Draw = vtkShadowDrawSetup::Props::None;
+    const float halfWidth = band.HalfWidth;
+    const float mapSize = static_cast<float>(this->MapSize);
+    for (const auto& mesh : meshes)
+    {
+      const vtkShadowCaster& caster = *mesh.first;
+      const glm::dvec3 toLight = light.Directional ? caster.DirectionToModel(-frustum.Direction)
+                                                   : caster.PointToModel(light.Position);
+      const float lightMC[4] = { static_cast<float>(toLight.x), static_cast<float>(toLight.y),
+        static_cast<float>(toLight.z), light.Directional ? 0.0f : 1.0f };
+      vtkTextureObject* depthMap = light.DepthMap;
+      mesh.second->SetUniforms(
+        [lightMC, halfWidth, mapSize, depthMap](vtkShaderProgram* program)
+        {
+          program->SetUniformi("silhouetteDepthMap", depthMap->GetTextureUnit());
+          program->SetUniform4f("silhouetteLightMC", lightMC);
+          program->SetUniformf("silhouetteMapSize", mapSize);
+          program->SetUniformf("silhouetteHalfWidth", halfWidth);
+        });
+      setup.Geometry.push_back(mesh.second);
+    }
+    light.DepthMap->Activate();
+    const bool drawn = this->Draw(s, setup);
+    light.DepthMap->Deactivate();
+    if (!drawn)
+    {
+      vtkErrorMacro("The silhouette pass failed (its shaders, or its target): drawing without "
+                    "shadows.");
+      return false;
+    }
+  }
+  if (this->MeasureSilhouettePass)
+  {
+    glFinish();
+  }
+  this->SilhouettePassTime =
+    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+
+  this->TopologyAwareMeshBytes = 0;
+  for (const auto& mesh : meshes)
+  {
+    this->TopologyAwareMeshBytes += mesh.second->GetUploadedBytes();
+    this->TopologyAwareMeshVertices += mesh.second->GetNumberOfVertices();
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+std::vector<vtkSoftShadowPass::ReceiverTexture> vtkSilhouetteShadowPass::GetReceiverTextures()
+{
+  std::vector<ReceiverTexture> textures;
+  const auto& lights = this->Maps->GetLights();
+  for (size_t slot = 0; slot < lights.size(); ++slot)
+  {
+    const std::string i = std::to_string(slot);
+    textures.push_back({ "silhouetteDistances" + i, "sampler2D", lights[slot].Textures[0] });
+    textures.push_back({ "silhouetteLookup" + i, "sampler2D", lights[slot].Textures[1] });
+  }
+  return textures;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkSilhouetteShadowPass::GetVisibilityDeclarations()
+{
+  return vtkSilhouetteLookupFS;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkSilhouetteShadowPass::GetVisibilityExpression(int slot)
+{
+  const auto& light = this->Maps->GetLights()[slot];
+  const std::string i = std::to_string(slot);
+  const std::string receiver =
+    "vtkShadowReceiver(" + i + ", vtkShadowPositionWC, vtkShadowNormalWC)";
+  if (this->DebugView)
+  {
+    return "silhouetteDebug(silhouetteDistances" + i + ", vtkShadowWorldToMap[" + i + "], " +
+      receiver + ", " + i + ")";
+  }
+  return "silhouetteVisibility(vtkShadowMap[" + std::to_string(light.MapIndex) +
+    "], silhouetteDistances" + i + ", silhouetteLookup" + i + ", vtkShadowWorldToMap[" + i + "], " +
+    receiver + ", " + i + ", " + (this->Variant == Soft ? "true" : "false") + ")";
+}
+
+//------------------------------------------------------------------------------
+void vtkSilhouetteShadowPass::SetVisibilityUniforms(vtkShaderProgram* program)
+{
+  if (!program->IsUniformUsed("silhouetteMapSize") && !program->IsUniformUsed("silhouetteBand[0]"))
+  {
+    return;
+  }
+  const auto& bands = this->Internal->Bands;
+  for (size_t slot = 0; slot < bands.size(); ++slot)
+  {
+    const std::string i = "[" + std::to_string(slot) + "]";
+    program->SetUniform4f(("silhouetteDepthRange" + i).c_str(), bands[slot].Range);
+    const float band[2] = { bands[slot].HalfWidth, bands[slot].MaximumPenumbra };
+    program->SetUniform2f(("silhouetteBand" + i).c_str(), band);
+  }
+  program->SetUniformf("silhouetteMapSize", static_cast<float>(this->MapSize));
+  program->SetUniformf("silhouetteSpread", static_cast<float>(this->SampleSpread));
+  program->SetUniformf("silhouetteEdgeBias", 0.0f);
+  const float texels[2] = { static_cast<float>(this->LookupTexels),
+    static_cast<float>(this->Variant == Soft ? this->LookupRows : 1) };
+  program->SetUniform2f("silhouetteLookupTexels", texels);
+}
+
+//------------------------------------------------------------------------------
+void vtkSilhouetteShadowPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  this->Superclass::ReleaseGraphicsResources(w);
+  this->Internal->Meshes.Clear();
+  for (auto& band : this->Internal->Bands)
+  {
+    band.LookupKey.clear();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkSilhouetteShadowPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Variant: " << (this->Variant == Soft ? "Soft" : "Hard") << "\n";
+  os << indent << "ExpectedWidth: " << this->ExpectedWidth << "\n";
+  os << indent << "EdgeWidth: " << this->EdgeWidth << "\n";
+  os << indent << "MaximumPenumbra: " << this->MaximumPenumbra << "\n";
+  os << indent << "SampleSpread: " << this->SampleSpread << "\n";
+  os << indent << "LookupTexels: " << this->LookupTexels << "\n";
+  os << indent << "LookupRows: " << this->LookupRows << "\n";
+  os << indent << "DropNonSilhouetteFaces: " << this->DropNonSilhouetteFaces << "\n";
+  os << indent << "DebugView: " << this->DebugView << "\n";
+  os << indent << "MeasureSilhouettePass: " << this->MeasureSilhouettePass << "\n";
+  os << indent << "TopologyAwareMeshBytes: " << this->TopologyAwareMeshBytes << "\n";
+}

@@ -1,0 +1,200 @@
+/**
+ * @class   vtkSilhouetteShadowPass
+ * @brief   Silhouette-distance shadow maps (Valient & Bujnak, "GPU friendly,
+ *          anti-aliased, soft shadow mapping", SCCG 2005): anti-aliased hard
+ *          shadows, and soft ones for spherical lights.
+ *
+ * Technique `silhouette`. Per light:
+ *
+ *  1. the framework's depth map, as `hard` draws it;
+ *  2. the silhouette pass (section 2.1.1) over each caster's topology aware
+ *     mesh (vtkTopologyAwareMeshFilter, built once per polydata through the
+ *     caster registry's cache and uploaded once): the vertex shader finds
+ *     the face's silhouette edges (eq. 1), collapses faces without one,
+ *     repairs faces degenerate after projection and grows the rest about
+ *     their incenter (eq. 2); the fragment shader keeps the thick silhouette
+ *     and writes the signed distance to its nearest point and that point's
+ *     depth into a float map the size of the depth map, the nearest
+ *     silhouette winning;
+ *  3. receivers (section 2.2) look the light up with eq. 4 in a lookup
+ *     texture: the Hard variant one sample on one row, the anti-aliased
+ *     hard shadow; the Soft variant (default) four samples, the row chosen
+ *     by the penumbra's width from the light's radius (section 2.2.1), its
+ *     profile the fraction of the light's disc left uncovered by a straight
+ *     edge.
+ *
+ * The offset of section 2.2 between the shadow map's boundary and the
+ * silhouette's is made on the shadow map's side: the depth map counts as
+ * occluded only where the four texels around the point all are (one
+ * textureGather), a shadow a texel smaller, so that the silhouette's
+ * anti-aliased edge stays where the geometry puts it rather than a texel
+ * out.
+ *
+ * Spot and directional lights; point lights are reported once and drawn
+ * unshadowed (not supported yet). Casters without polygons (lines, points)
+ * cast their depth-map shadow only; what the TAM filter does not handle
+ * (coincident points with different ids, non-manifold edges) is in its
+ * documentation.
+ *
+ * @sa vtkTopologyAwareMeshFilter vtkSoftShadowPass
+ */
+
+#ifndef vtkSilhouetteShadowPass_h
+#define vtkSilhouetteShadowPass_h
+
+#include "vtkSoftShadowPass.h"
+
+#include <memory> // for std::unique_ptr
+
+class VTKSOFTSHADOWSRENDERING_EXPORT vtkSilhouetteShadowPass : public vtkSoftShadowPass
+{
+public:
+  static vtkSilhouetteShadowPass* New();
+  vtkTypeMacro(vtkSilhouetteShadowPass, vtkSoftShadowPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Variants
+  {
+    Soft = 0,
+    Hard = 1
+  };
+
+  ///@{
+  /**
+   * Soft (default): penumbrae from the light's radius, four samples. Hard:
+   * anti-aliased hard shadows, one sample, whatever the radius.
+   */
+  vtkSetClampMacro(Variant, int, Soft, Hard);
+  vtkGetMacro(Variant, int);
+  void SetVariantToSoft() { this->SetVariant(Soft); }
+  void SetVariantToHard() { this->SetVariant(Hard); }
+  ///@}
+
+  ///@{
+  /**
+   * The expected silhouette width in texels (the paper's rendering
+   * parameter): distances are kept within half of it plus a texel diagonal
+   * of the silhouette. 0 (default) sizes it from the light: twice the widest
+   * penumbra (soft) or 2 (hard).
+   */
+  vtkSetClampMacro(ExpectedWidth, double, 0.0, 256.0);
+  vtkGetMacro(ExpectedWidth, double);
+  ///@}
+
+  ///@{
+  /**
+   * Width in texels over which a hard edge goes from lit to shadowed, and
+   * the narrowest penumbra. The distance is exact to a fraction of a texel,
+   * so the edge needs no wider ramp than the screen's own edges (against
+   * an exact hard shadow, 1 texel doubles the error of 0.1). Default 0.1.
+   */
+  vtkSetClampMacro(EdgeWidth, double, 0.01, 16.0);
+  vtkGetMacro(EdgeWidth, double);
+  ///@}
+
+  ///@{
+  /**
+   * Soft: the widest penumbra half-width kept, in texels; wider ones are
+   * clamped to it (and the silhouette pass draws more the wider it is).
+   * Default 48.
+   */
+  vtkSetClampMacro(MaximumPenumbra, double, 1.0, 128.0);
+  vtkGetMacro(MaximumPenumbra, double);
+  ///@}
+
+  ///@{
+  /**
+   * Soft: how far the three outer samples lie from the point, in penumbra
+   * half-widths. Default 0.25 (docs/quality.md: wider spreads pick up
+   * other silhouettes on folded meshes).
+   */
+  vtkSetClampMacro(SampleSpread, double, 0.0, 0.8);
+  vtkGetMacro(SampleSpread, double);
+  ///@}
+
+  ///@{
+  /**
+   * Lookup texture: texels per segment of eq. 4 (4 segments side by side)
+   * and, soft, rows of penumbra widths. Defaults 256 and 32.
+   */
+  vtkSetClampMacro(LookupTexels, int, 8, 4096);
+  vtkGetMacro(LookupTexels, int);
+  vtkSetClampMacro(LookupRows, int, 2, 1024);
+  vtkGetMacro(LookupRows, int);
+  ///@}
+
+  ///@{
+  /**
+   * For casters whose data does not change shape: build their TAMs without
+   * the faces that can never have a silhouette edge
+   * (vtkTopologyAwareMeshFilter::DropNonSilhouetteFaces). Default off.
+   */
+  vtkSetMacro(DropNonSilhouetteFaces, bool);
+  vtkGetMacro(DropNonSilhouetteFaces, bool);
+  vtkBooleanMacro(DropNonSilhouetteFaces, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Show the signed distance map as receivers look it up instead of the
+   * shadow: 0.5 on a silhouette, darker on the occluder's side. Default off.
+   */
+  vtkSetMacro(DebugView, bool);
+  vtkGetMacro(DebugView, bool);
+  vtkBooleanMacro(DebugView, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Results of the last frame: the bytes of every caster's TAM on the GPU,
+   * the TAM vertices drawn per light, and the silhouette pass's wall time
+   * (ms, all lights; measured with glFinish() around it only when
+   * MeasureSilhouettePass is on, which slows the frame).
+   */
+  vtkGetMacro(TopologyAwareMeshBytes, vtkIdType);
+  vtkGetMacro(TopologyAwareMeshVertices, vtkIdType);
+  vtkGetMacro(SilhouettePassTime, double);
+  vtkSetMacro(MeasureSilhouettePass, bool);
+  vtkGetMacro(MeasureSilhouettePass, bool);
+  ///@}
+
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+protected:
+  vtkSilhouetteShadowPass();
+  ~vtkSilhouetteShadowPass() override;
+
+  bool RenderShadowMaps(const vtkRenderState* s) override;
+  std::string GetVisibilityDeclarations() override;
+  std::vector<std::string> GetReceiverExtensions() const override
+  {
+    // The depth map's four comparisons: textureGather on a shadow sampler.
+    return { "GL_ARB_texture_gather", "GL_ARB_gpu_shader5" };
+  }
+  std::string GetVisibilityExpression(int slot) override;
+  void SetVisibilityUniforms(vtkShaderProgram* program) override;
+  std::vector<ReceiverTexture> GetReceiverTextures() override;
+
+  int Variant = Soft;
+  double ExpectedWidth = 0.0;
+  double EdgeWidth = 0.1;
+  double MaximumPenumbra = 48.0;
+  double SampleSpread = 0.25;
+  int LookupTexels = 256;
+  int LookupRows = 32;
+  bool DropNonSilhouetteFaces = false;
+  bool DebugView = false;
+  bool MeasureSilhouettePass = false;
+  vtkIdType TopologyAwareMeshBytes = 0;
+  vtkIdType TopologyAwareMeshVertices = 0;
+  double SilhouettePassTime = 0.0;
+
+private:
+  vtkSilhouetteShadowPass(const vtkSilhouetteShadowPass&) = delete;
+  void operator=(const vtkSilhouetteShadowPass&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+};
+
+#endif

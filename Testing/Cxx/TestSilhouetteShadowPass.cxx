@@ -1,0 +1,44 @@
+// Regression images of the `silhouette` technique: run as
+//   TestSilhouetteShadowPass <ball|fence> <soft|hard> -V baseline ...
+// Penumbrae come from the light's radius (the default), so no tuning per scene.
+#include "vtkNew.h"
+#include "vtkRegressionTestImage.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSilhouetteShadowPass.h"
+
+#include "ShadowTestScene.h"
+
+#include <cstring>
+#include <iostream>
+
+int TestSilhouetteShadowPass(int argc, char* argv[])
+{
+  if (argc < 3)
+  {
+    std::cerr << "usage: TestSilhouetteShadowPass <ball|fence> <soft|hard> ...\n";
+    return EXIT_FAILURE;
+  }
+  vtkNew<vtkRenderer> renderer;
+  if (std::strcmp(argv[1], "fence") == 0)
+  {
+    ShadowTestScene::BuildFence(renderer, 0.3);
+  }
+  else
+  {
+    ShadowTestScene::Build(renderer, 0.4, 1.4);
+  }
+
+  vtkNew<vtkSilhouetteShadowPass> pass;
+  pass->SetMapSize(1024);
+  if (std::strcmp(argv[2], "hard") == 0)
+  {
+    pass->SetVariantToHard();
+  }
+  renderer->SetPass(pass);
+
+  vtkSmartPointer<vtkRenderWindow> window = ShadowTestScene::Show(renderer, 320, 240);
+
+  int result = vtkRegressionTestImage(window);
+  return result == vtkRegressionTester::FAILED ? EXIT_FAILURE : EXIT_SUCCESS;
+}
