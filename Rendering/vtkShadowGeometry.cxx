@@ -13,6 +13,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
+
 vtkShadowGeometry::vtkShadowGeometry() = default;
 vtkShadowGeometry::~vtkShadowGeometry() = default;
 
@@ -38,24 +40,46 @@ void vtkShadowGeometry::SetShaders(
 //------------------------------------------------------------------------------
 void vtkShadowGeometry::Upload(vtkShaderProgram* program)
 {
-  if (this->Input && this->UploadTime >= this->Input->GetMTime() && this->VAO &&
-    program == this->BoundProgram)
+  const bool current = this->Input && this->UploadTime >= this->Input->GetMTime() && this->VAO;
+  if (current && program == this->BoundProgram)
   {
     return;
   }
-  this->Attributes.clear();
-  this->Vertices = 0;
-  this->BoundProgram = nullptr;
   if (!this->VAO)
   {
     this->VAO = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
   }
+  if (!current)
+  {
+    this->Attributes.clear();
+    this->Vertices = 0;
+  }
+  this->BoundProgram = nullptr;
   this->VAO->ShaderProgramChanged();
   if (!this->Input)
   {
     return;
   }
   this->UploadTime = this->Input->GetMTime();
+  auto bind = [this, program]()
+  {
+    this->VAO->Bind();
+    for (const Attribute& a : this->Attributes)
+    {
+      if (program->IsAttributeUsed(a.Name.c_str()))
+      {
+        this->VAO->AddAttributeArray(program, a.Buffer, a.Name, 0,
+          sizeof(float) * a.Components, VTK_FLOAT, a.Components, false);
+      }
+    }
+    this->VAO->Release();
+    this->BoundProgram = program;
+  };
+  if (current && !this->MissesAttributes(program))
+  {
+    bind(); // another program of this geometry: its buffers serve
+    return;
+  }
 
   // The triangles' corners, in order: every attribute expanded alike.
   std::vector<vtkIdType> corners;
@@ -63,6 +87,7 @@ void vtkShadowGeometry::Upload(vtkShaderProgram* program)
   const vtkIdType numberOfPoints = this->Input->GetNumberOfPoints();
   vtkIdType n = 0;
   const vtkIdType* ids = nullptr;
+  bool reported = current; // the skipped triangles were reported at the first upload
   for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
   {
     if (n != 3)
@@ -72,18 +97,25 @@ void vtkShadowGeometry::Upload(vtkShaderProgram* program)
     if (ids[0] < 0 || ids[1] < 0 || ids[2] < 0 || ids[0] >= numberOfPoints ||
       ids[1] >= numberOfPoints || ids[2] >= numberOfPoints)
     {
-      vtkGenericWarningMacro("vtkShadowGeometry: a triangle names a point that does not exist; "
-                             "it is skipped.");
+      if (!reported)
+      {
+        vtkGenericWarningMacro("vtkShadowGeometry: a triangle names a point that does not exist; "
+                               "it is skipped.");
+        reported = true;
+      }
       continue;
     }
     corners.insert(corners.end(), ids, ids + 3);
   }
   this->Vertices = static_cast<int>(corners.size());
 
-  // Attributes the shaders do not use are neither uploaded nor bound.
+  // Attributes the shaders do not use are neither uploaded nor bound; those
+  // another program of this geometry uploaded stay.
   auto add = [&](const std::string& name, vtkDataArray* array, int first, int components)
   {
-    if (!program->IsAttributeUsed(name.c_str()))
+    if (!program->IsAttributeUsed(name.c_str()) ||
+      std::any_of(this->Attributes.begin(), this->Attributes.end(),
+        [&name](const Attribute& a) { return a.Name == name; }))
     {
       return;
     }
@@ -132,14 +164,33 @@ void vtkShadowGeometry::Upload(vtkShaderProgram* program)
       add(array->GetName(), array, 0, components);
     }
   }
-  this->VAO->Bind();
-  for (const Attribute& a : this->Attributes)
+  bind();
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowGeometry::MissesAttributes(vtkShaderProgram* program) const
+{
+  std::vector<std::string> names = { "vtkShadowVertexMC" };
+  vtkPointData* pd = this->Input->GetPointData();
+  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
   {
-    this->VAO->AddAttributeArray(
-      program, a.Buffer, a.Name, 0, sizeof(float) * a.Components, VTK_FLOAT, a.Components, false);
+    vtkDataArray* array = pd->GetArray(a);
+    if (array && array->GetName())
+    {
+      for (int k = 0; k < (array->GetNumberOfComponents() == 9 ? 3 : 1); ++k)
+      {
+        names.push_back(array->GetName() +
+          (array->GetNumberOfComponents() == 9 ? std::to_string(k) : std::string()));
+      }
+    }
   }
-  this->VAO->Release();
-  this->BoundProgram = program;
+  return std::any_of(names.begin(), names.end(),
+    [this, program](const std::string& name)
+    {
+      return program->IsAttributeUsed(name.c_str()) &&
+        std::none_of(this->Attributes.begin(), this->Attributes.end(),
+          [&name](const Attribute& a) { return a.Name == name; });
+    });
 }
 
 //------------------------------------------------------------------------------

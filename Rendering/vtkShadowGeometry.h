@@ -71,6 +71,7 @@ private:
   void operator=(const vtkShadowGeometry&) = delete;
 
   void Upload(vtkShaderProgram* program);
+  bool MissesAttributes(vtkShaderProgram* program) const;
 
   struct Attribute
   {

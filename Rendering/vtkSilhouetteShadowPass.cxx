@@ -45,6 +45,15 @@ struct CasterMesh
   bool Dropped = false; ///< built with DropNonSilhouetteFaces
 };
 
+// The fragment shader `source` for drawing into cube faces.
+std::string CubeFace(const std::string& source)
+{
+  const std::string tag = "//VTK::System::Dec";
+  std::string text = source;
+  text.insert(text.find(tag) + tag.size(), "\n#define SILHOUETTE_CUBE_FACE");
+  return text;
+}
+
 // The fraction of a disc of unit radius on the lit side of a straight edge
 // at signed distance u (u > 0: the centre is on the occluder's side): the
 // penumbra profile of a spherical light behind a straight silhouette.
@@ -67,6 +76,9 @@ struct vtkSilhouetteShadowPass::Internals
   };
   std::vector<Band> Bands;
   vtkShadowCasterCache<CasterMesh> Meshes;
+  // Pass 2's fragment shader for cube faces (no 2D depth map to read).
+  std::string CubeFaceShader = CubeFace(vtkSilhouetteEdgesFS);
+  bool PackedReported = false;
 };
 
 vtkStandardNewMacro(vtkSilhouetteShadowPass);
@@ -116,7 +128,17 @@ std::vector<float> BuildLookup(
 //------------------------------------------------------------------------------
 bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
 {
-  // Pass 1: depth, as `hard` draws it.
+  // Pass 1: depth, as `hard` draws it. Receivers gather four texels of a
+  // point light's cube of squared distances: float ones.
+  if (this->PackedCubeMaps)
+  {
+    if (!this->Internal->PackedReported)
+    {
+      vtkWarningMacro("PackedCubeMaps: silhouette shadows read float cube maps; using those.");
+      this->Internal->PackedReported = true;
+    }
+    this->PackedCubeMaps = false;
+  }
   if (!this->RenderLightDepthMaps(s, false))
   {
     return false;
@@ -191,7 +213,8 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
   for (size_t slot = 0; slot < lights.size(); ++slot)
   {
     auto& light = lights[slot];
-    const vtkShadowFrustum& frustum = light.Map;
+    // Point lights: the six cube faces share their depth range and texel size.
+    const vtkShadowFrustum& frustum = light.Point ? light.Faces[0] : light.Map;
     Internals::Band& band = bands[slot];
 
     // The penumbra's half-width in texels is K (r - e) / (e r) behind a spot
@@ -222,21 +245,36 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
     {
       light.Textures.resize(2);
     }
-    if (!light.Textures[0] || light.Textures[0]->GetWidth() != static_cast<unsigned>(this->MapSize))
+    const unsigned int target = light.Point ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
+    if (!light.Textures[0] || light.Textures[0]->GetWidth() != static_cast<unsigned>(this->MapSize) ||
+      light.Textures[0]->GetTarget() != target)
     {
-      light.Textures[0] =
-        vtkShadowScreenBuffers::NewFloatTexture(context, this->MapSize, this->MapSize, 2);
+      if (light.Point)
+      {
+        light.Textures[0] = vtkSmartPointer<vtkTextureObject>::New();
+        light.Textures[0]->SetContext(context);
+        light.Textures[0]->SetWrapS(vtkTextureObject::ClampToEdge);
+        light.Textures[0]->SetWrapT(vtkTextureObject::ClampToEdge);
+        light.Textures[0]->SetWrapR(vtkTextureObject::ClampToEdge);
+        light.Textures[0]->CreateCubeFromRaw(this->MapSize, this->MapSize, 2, VTK_FLOAT, nullptr);
+      }
+      else
+      {
+        light.Textures[0] =
+          vtkShadowScreenBuffers::NewFloatTexture(context, this->MapSize, this->MapSize, 2);
+      }
       light.Textures[0]->SetMinificationFilter(vtkTextureObject::Linear);
       light.Textures[0]->SetMagnificationFilter(vtkTextureObject::Linear);
     }
     const int rows = soft ? this->LookupRows : 1;
+    // Point lights take one sample (vtkSilhouetteLookupFS.glsl): profiles unnarrowed.
+    const double spread = soft && !light.Point ? this->SampleSpread : 0.0;
     const std::vector<double> key = { static_cast<double>(this->LookupTexels),
-      static_cast<double>(rows), band.HalfWidth, band.MaximumPenumbra, this->EdgeWidth,
-      soft ? this->SampleSpread : 0.0 };
+      static_cast<double>(rows), band.HalfWidth, band.MaximumPenumbra, this->EdgeWidth, spread };
     if (!light.Textures[1] || band.LookupKey != key)
     {
       std::vector<float> lookup = BuildLookup(this->LookupTexels, rows, band.HalfWidth,
-        band.MaximumPenumbra, this->EdgeWidth, soft ? this->SampleSpread : 0.0);
+        band.MaximumPenumbra, this->EdgeWidth, spread);
       light.Textures[1] = vtkSmartPointer<vtkTextureObject>::New();
       light.Textures[1]->SetContext(context);
       light.Textures[1]->SetMinificationFilter(vtkTextureObject::Linear);
@@ -251,9 +289,14 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
     }
 
     // Pass 2: the silhouettes of every caster's TAM, the light in each
-    // caster's model space.
+    // caster's model space; a point light's one cube face at a time.
     vtkShadowDrawSetup setup;
     setup.View = &light.Map;
+    if (light.Point)
+    {
+      setup.View = nullptr;
+      setup.Faces = &light.Faces;
+    }
     setup.Colours = { light.Textures[0] };
     setup.ClearColour[0] = ClearDistance;
     setup.ClearColour[1] = 1.0f;
@@ -267,20 +310,36 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
                                                    : caster.PointToModel(light.Position);
       const float lightMC[4] = { static_cast<float>(toLight.x), static_cast<float>(toLight.y),
         static_cast<float>(toLight.z), light.Directional ? 0.0f : 1.0f };
-      vtkTextureObject* depthMap = light.DepthMap;
+      vtkTextureObject* depthMap = light.Point ? nullptr : light.DepthMap.Get();
+      mesh.second->SetShaders(vtkSilhouetteEdgesVS,
+        light.Point ? this->Internal->CubeFaceShader : std::string(vtkSilhouetteEdgesFS));
       mesh.second->SetUniforms(
         [lightMC, halfWidth, mapSize, depthMap](vtkShaderProgram* program)
         {
-          program->SetUniformi("silhouetteDepthMap", depthMap->GetTextureUnit());
+          if (depthMap)
+          {
+            program->SetUniformi("silhouetteDepthMap", depthMap->GetTextureUnit());
+          }
           program->SetUniform4f("silhouetteLightMC", lightMC);
           program->SetUniformf("silhouetteMapSize", mapSize);
           program->SetUniformf("silhouetteHalfWidth", halfWidth);
         });
       setup.Geometry.push_back(mesh.second);
     }
-    light.DepthMap->Activate();
-    const bool drawn = this->Draw(s, setup);
-    light.DepthMap->Deactivate();
+    bool drawn = true;
+    if (light.Point)
+    {
+      for (setup.CubeFace = 0; setup.CubeFace < 6 && drawn; ++setup.CubeFace)
+      {
+        drawn = this->Draw(s, setup);
+      }
+    }
+    else
+    {
+      light.DepthMap->Activate();
+      drawn = this->Draw(s, setup);
+      light.DepthMap->Deactivate();
+    }
     if (!drawn)
     {
       vtkErrorMacro("The silhouette pass failed (its shaders, or its target): drawing without "
@@ -312,7 +371,8 @@ std::vector<vtkSoftShadowPass::ReceiverTexture> vtkSilhouetteShadowPass::GetRece
   for (size_t slot = 0; slot < lights.size(); ++slot)
   {
     const std::string i = std::to_string(slot);
-    textures.push_back({ "silhouetteDistances" + i, "sampler2D", lights[slot].Textures[0] });
+    textures.push_back({ "silhouetteDistances" + i,
+      lights[slot].Point ? "samplerCube" : "sampler2D", lights[slot].Textures[0] });
     textures.push_back({ "silhouetteLookup" + i, "sampler2D", lights[slot].Textures[1] });
   }
   return textures;
@@ -329,6 +389,20 @@ std::string vtkSilhouetteShadowPass::GetVisibilityExpression(int slot)
 {
   const auto& light = this->Maps->GetLights()[slot];
   const std::string i = std::to_string(slot);
+  const std::string m = std::to_string(light.MapIndex);
+  const std::string soft = this->Variant == Soft ? "true" : "false";
+  if (light.Point)
+  {
+    const std::string center = "vtkShadowCubeCenter[" + m + "]";
+    if (this->DebugView)
+    {
+      return "silhouetteCubeDebug(silhouetteDistances" + i + ", " + center +
+        ", vtkShadowPositionWC, " + i + ")";
+    }
+    return "silhouetteCubeVisibility(vtkShadowCube[" + m + "], silhouetteDistances" + i +
+      ", silhouetteLookup" + i + ", " + center + ", vtkShadowPositionWC, vtkShadowNormalWC, " + i +
+      ", " + soft + ")";
+  }
   const std::string receiver =
     "vtkShadowReceiver(" + i + ", vtkShadowPositionWC, vtkShadowNormalWC)";
   if (this->DebugView)
@@ -336,9 +410,9 @@ std::string vtkSilhouetteShadowPass::GetVisibilityExpression(int slot)
     return "silhouetteDebug(silhouetteDistances" + i + ", vtkShadowWorldToMap[" + i + "], " +
       receiver + ", " + i + ")";
   }
-  return "silhouetteVisibility(vtkShadowMap[" + std::to_string(light.MapIndex) +
-    "], silhouetteDistances" + i + ", silhouetteLookup" + i + ", vtkShadowWorldToMap[" + i + "], " +
-    receiver + ", " + i + ", " + (this->Variant == Soft ? "true" : "false") + ")";
+  return "silhouetteVisibility(vtkShadowMap[" + m + "], silhouetteDistances" + i +
+    ", silhouetteLookup" + i + ", vtkShadowWorldToMap[" + i + "], " + receiver + ", " + i + ", " +
+    soft + ")";
 }
 
 //------------------------------------------------------------------------------

@@ -30,8 +30,11 @@
  * anti-aliased edge stays where the geometry puts it rather than a texel
  * out.
  *
- * Spot and directional lights; point lights are reported once and drawn
- * unshadowed (not supported yet). Casters without polygons (lines, points)
+ * Spot, directional and point lights; a point light's six cube faces each
+ * get a silhouette pass into a cube map beside the framework's cube of
+ * squared distances, whose four texels around a receiver give the shadow
+ * map's verdict (float cube maps: PackedCubeMaps is turned off with a
+ * warning). Casters without polygons (lines, points)
  * cast their depth-map shadow only; what the TAM filter does not handle
  * (coincident points with different ids, non-manifold edges) is in its
  * documentation.
@@ -166,6 +169,7 @@ protected:
 
   bool RenderShadowMaps(const vtkRenderState* s) override;
   std::string GetVisibilityDeclarations() override;
+  bool SupportsPointLights() const override { return true; }
   std::vector<std::string> GetReceiverExtensions() const override
   {
     // The depth map's four comparisons: textureGather on a shadow sampler.

@@ -13,7 +13,9 @@
 flat in vec3 silhouetteCorner[3];
 flat in int silhouetteEdges;
 uniform float silhouetteHalfWidth;  // w_sc, texels
+#ifndef SILHOUETTE_CUBE_FACE
 uniform sampler2DShadow silhouetteDepthMap; // pass 1's depth map (nearest)
+#endif
 
 out vec4 fragOutput0; // r: signed distance (texels), g: the silhouette point's depth
 
@@ -54,6 +56,7 @@ void main()
   {
     discard; // outside the thick silhouette
   }
+#ifndef SILHOUETTE_CUBE_FACE
   if (corner || side == 0.0)
   {
     // Nearest to a corner of the silhouette, one edge's side is not the
@@ -64,6 +67,15 @@ void main()
     side = texture(silhouetteDepthMap, vec3(p / vec2(textureSize(silhouetteDepthMap, 0)), depth)) > 0.5
       ? -1.0 : 1.0;
   }
+#else
+  // A cube face: its map holds squared distances, not this face's depth;
+  // the face's own side decides, and a face seen edge-on leaves the texel
+  // to its neighbour.
+  if (side == 0.0)
+  {
+    discard;
+  }
+#endif
   fragOutput0 = vec4(side > 0.0 ? nearest : -nearest, depth, 0.0, 1.0);
   gl_FragDepth = 0.99 * nearest / silhouetteHalfWidth + 0.01 * clamp(depth, 0.0, 1.0);
 }

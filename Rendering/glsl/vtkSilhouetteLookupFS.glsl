@@ -12,6 +12,8 @@ uniform float silhouetteMapSize;
 uniform float silhouetteSpread;     // the three outer samples' distance, in penumbra half-widths
 uniform float silhouetteEdgeBias;   // in map depth: how far in front a silhouette must be
 uniform vec2 silhouetteLookupTexels; // texels per segment, rows
+// Where section 2.2.1's three outer samples lie, in units of their reach.
+const vec2 silhouetteAround[3] = vec2[3](vec2(0.0, 1.0), vec2(-0.8660254, -0.5), vec2(0.8660254, -0.5));
 
 // A map depth in [0, 1] as a distance along the light's axis.
 float silhouetteLinearDepth(vec4 range, float z)
@@ -31,24 +33,42 @@ float silhouettePenumbra(vec4 range, float edge, float z)
   return range.z > 0.0 ? w : w / max(e * r, 1.0e-20);
 }
 
-// One sample: the visibility at map point p. The depth map's four texels
-// around p all occluded is the shadow map's verdict (z_O < z): a shadow
-// shrunk by up to a texel, which is the paper's offset between the two
-// boundaries, made on the shadow map's side so that the silhouette's edge
-// stays where the geometry puts it. Then eq. 4, its distance term inset so
-// that filtering never mixes two segments, and for soft shadows a row
-// chosen by the penumbra's width.
-float silhouetteSample(sampler2DShadow map, sampler2D silhouettes, sampler2D lookup, vec3 p,
-  int i, bool soft, out float width)
+// Eq. 4 and, for soft shadows, the row of the penumbra's width: the
+// visibility of a sample given its distance and silhouette depth (edge), its
+// own depth z and the shadow map's verdict (occluded: z_O < z).
+float silhouetteResolve(sampler2D lookup, vec2 edge, float z, float occluded, int i, bool soft,
+  out float width)
 {
-  float lit = dot(textureGather(map, p.xy, p.z), vec4(1.0));
-  float occluded = lit == 0.0 ? 1.0 : 0.0; // z_O < z
-  // d_E, filtered bilinearly from the four texels around p, which also
-  // give its gradient (gather order: (0,1), (1,1), (1,0), (0,0)).
-  vec4 d4 = textureGather(silhouettes, p.xy, 0);
-  vec2 f = fract(p.xy * silhouetteMapSize - 0.5);
-  vec2 edge = vec2(mix(mix(d4.w, d4.z, f.x), mix(d4.x, d4.y, f.x), f.y),
-    texture(silhouettes, p.xy).g); // d_E, z_E
+  float inFront = edge.y < z - silhouetteEdgeBias ? 1.0 : 0.0; // z_E < z
+  // The distance term inset so that filtering never mixes two segments.
+  float d = clamp(0.5 + 0.5 * edge.x / silhouetteBand[i].x, 0.0, 1.0);
+  d = (0.5 + d * (silhouetteLookupTexels.x - 1.0)) / silhouetteLookupTexels.x;
+  float coord = 0.25 * (d + occluded) + 0.5 * inFront; // eq. 4
+  // The penumbra's half-width, clamped to the widest the lookup holds.
+  width = soft && inFront > 0.0
+    ? min(silhouettePenumbra(silhouetteDepthRange[i], edge.y, z), silhouetteBand[i].y)
+    : 0.0;
+  float row = width / silhouetteBand[i].y;
+  row = (0.5 + row * (silhouetteLookupTexels.y - 1.0)) / silhouetteLookupTexels.y;
+  return texture(lookup, vec2(coord, row)).r;
+}
+
+// A sample's distance from the four silhouette-map texels around it (d4,
+// gather order (0,1), (1,1), (1,0), (0,0); f: the position between them)
+// and their silhouette depths z4 (the sample's is the nearest among texels
+// that have a silhouette: filtering depths with empty texels would move
+// them, badly so in a point light's depth range), given how many of the four depth-map texels
+// see it (lit). The shadow map's verdict is all four occluded: a shadow
+// shrunk by up to a texel, which is the paper's offset between the two
+// boundaries (section 2.2), made on the shadow map's side so that the
+// silhouette's edge stays where the geometry puts it. `across` returns
+// where (texels from the sample) the depth map must show the light for the
+// sample to be in a penumbra's inner half; zero when no test is needed.
+vec2 silhouetteEdge(vec4 d4, vec4 z4, vec2 f, float lit, int i, out vec2 across)
+{
+  vec4 z = mix(vec4(1.0), z4, vec4(greaterThan(d4, vec4(-2.0 * silhouetteBand[i].x))));
+  vec2 edge = vec2(mix(mix(d4.w, d4.z, f.x), mix(d4.x, d4.y, f.x), f.y), min(min(z.x, z.y), min(z.z, z.w)));
+  across = vec2(0.0);
   if (lit == 4.0)
   {
     // Seen by all four texels, the point is the surface nearest the light:
@@ -58,27 +78,33 @@ float silhouetteSample(sampler2DShadow map, sampler2D silhouettes, sampler2D loo
     // occluded.)
     edge.x = edge.x > 0.0 ? -silhouetteBand[i].x : edge.x;
   }
-  else if (occluded > 0.0 && edge.x > 0.0 && all(greaterThan(d4, vec4(-silhouetteBand[i].x))))
+  else if (lit == 0.0 && edge.x > 0.0 && all(greaterThan(d4, vec4(-silhouetteBand[i].x))))
   {
     // In the shadow map's shadow, on the occluder's side: the inner half of
     // a penumbra only if the light shows past the silhouette. Across an
     // inner fold (a bump in front of more of the occluder) it does not.
     vec2 gradient = vec2(mix(d4.z - d4.w, d4.y - d4.x, f.y), mix(d4.x - d4.w, d4.y - d4.z, f.x));
-    vec2 across = p.xy -
-      gradient / max(length(gradient), 1.0e-6) * (edge.x + 1.5) / silhouetteMapSize;
-    edge.x = dot(textureGather(map, across, p.z), vec4(1.0)) == 0.0 ? -silhouetteBand[i].x : edge.x;
+    across = -gradient / max(length(gradient), 1.0e-6) * (edge.x + 1.5);
   }
-  float inFront = edge.y < p.z - silhouetteEdgeBias ? 1.0 : 0.0; // z_E < z
-  float d = clamp(0.5 + 0.5 * edge.x / silhouetteBand[i].x, 0.0, 1.0);
-  d = (0.5 + d * (silhouetteLookupTexels.x - 1.0)) / silhouetteLookupTexels.x;
-  float coord = 0.25 * (d + occluded) + 0.5 * inFront; // eq. 4
-  // The penumbra's half-width, clamped to the widest the lookup holds.
-  width = soft && inFront > 0.0
-    ? min(silhouettePenumbra(silhouetteDepthRange[i], edge.y, p.z), silhouetteBand[i].y)
-    : 0.0;
-  float row = width / silhouetteBand[i].y;
-  row = (0.5 + row * (silhouetteLookupTexels.y - 1.0)) / silhouetteLookupTexels.y;
-  return texture(lookup, vec2(coord, row)).r;
+  return edge;
+}
+
+#if VTK_SHADOW_MAPS > 0
+// One sample at map point p of a spot or directional light.
+float silhouetteSample(sampler2DShadow map, sampler2D silhouettes, sampler2D lookup, vec3 p,
+  int i, bool soft, out float width)
+{
+  float lit = dot(textureGather(map, p.xy, p.z), vec4(1.0));
+  vec2 f = fract(p.xy * silhouetteMapSize - 0.5);
+  vec2 across;
+  vec2 edge = silhouetteEdge(textureGather(silhouettes, p.xy, 0),
+    textureGather(silhouettes, p.xy, 1), f, lit, i, across);
+  if (across != vec2(0.0) &&
+    dot(textureGather(map, p.xy + across / silhouetteMapSize, p.z), vec4(1.0)) == 0.0)
+  {
+    edge.x = -silhouetteBand[i].x;
+  }
+  return silhouetteResolve(lookup, edge, p.z, lit == 0.0 ? 1.0 : 0.0, i, soft, width);
 }
 
 // Light i's visibility at a receiver point (already offset, world space).
@@ -100,18 +126,95 @@ float silhouetteVisibility(sampler2DShadow map, sampler2D silhouettes, sampler2D
     return visibility;
   }
   float reach = silhouetteSpread * width / silhouetteMapSize;
-  const vec2 around[3] = vec2[3](vec2(0.0, 1.0), vec2(-0.8660254, -0.5), vec2(0.8660254, -0.5));
   for (int k = 0; k < 3; ++k)
   {
     float unused;
     visibility += silhouetteSample(
-      map, silhouettes, lookup, vec3(p.xy + reach * around[k], p.z), i, soft, unused);
+      map, silhouettes, lookup, vec3(p.xy + reach * silhouetteAround[k], p.z), i, soft, unused);
   }
   return 0.25 * visibility;
 }
+#endif
+
+#if VTK_SHADOW_CUBES > 0
+// A cube face's axes for direction v (OpenGL's face layout): s and t
+// across the face, and the distance along its axis.
+void silhouetteCubeFace(vec3 v, out vec3 s, out vec3 t, out float axis)
+{
+  vec3 a = abs(v);
+  if (a.x >= a.y && a.x >= a.z)
+  {
+    s = vec3(0.0, 0.0, -sign(v.x));
+    t = vec3(0.0, -1.0, 0.0);
+    axis = a.x;
+  }
+  else if (a.y >= a.z)
+  {
+    s = vec3(1.0, 0.0, 0.0);
+    t = vec3(0.0, 0.0, sign(v.y));
+    axis = a.y;
+  }
+  else
+  {
+    s = vec3(sign(v.z), 0.0, 0.0);
+    t = vec3(0.0, -1.0, 0.0);
+    axis = a.z;
+  }
+}
+
+// One sample of a point light along direction v (light to receiver), the
+// receiver's squared distance `reference` (bias included): the cube faces'
+// depth maps are the framework's squared distances, the silhouette cube
+// holds each face's distances and depths.
+float silhouetteCubeSample(samplerCube distances, samplerCube silhouettes, sampler2D lookup,
+  vec3 v, float reference, int i, bool soft, out float width)
+{
+  vec3 s, t;
+  float axis;
+  silhouetteCubeFace(v, s, t, axis);
+  vec2 st = (vec2(dot(v, s), dot(v, t)) / axis * 0.5 + 0.5) * silhouetteMapSize;
+  float lit = dot(vec4(greaterThanEqual(textureGather(distances, v), vec4(reference))), vec4(1.0));
+  vec2 across;
+  vec2 edge = silhouetteEdge(textureGather(silhouettes, v, 0), textureGather(silhouettes, v, 1),
+    fract(st - 0.5), lit, i, across);
+  // Texels of this face as a direction: 2 / size of the axis distance each.
+  vec3 step = v + (across.x * s + across.y * t) * (2.0 * axis / silhouetteMapSize);
+  if (across != vec2(0.0) &&
+    all(lessThan(textureGather(distances, step), vec4(reference))))
+  {
+    edge.x = -silhouetteBand[i].x;
+  }
+  vec4 range = silhouetteDepthRange[i];
+  float z = 0.5 * ((range.y + range.x) / (range.y - range.x) -
+    2.0 * range.y * range.x / ((range.y - range.x) * axis)) + 0.5;
+  return silhouetteResolve(lookup, edge, z, lit == 0.0 ? 1.0 : 0.0, i, soft, width);
+}
+
+// Light i's visibility (a point light, its cube map `distances` centred on
+// `center`) at a receiver: as silhouetteVisibility(), on the cube's faces,
+// from the point's own sample.
+float silhouetteCubeVisibility(samplerCube distances, samplerCube silhouettes, sampler2D lookup,
+  vec3 center, vec4 positionWC, vec3 normalWC, int i, bool soft)
+{
+  float size;
+  vec3 v = vtkShadowCubeDirection(
+    center, positionWC, normalWC, vtkShadowCubeTexel, vtkShadowNormalBias, size);
+  float reference = dot(v, v) * vtkShadowDistanceBias;
+  // One sample: the three outer ones of section 2.2.1 drew faint arcs
+  // beyond the penumbrae on cube faces (docs/quality.md), not yet understood.
+  float width;
+  return silhouetteCubeSample(distances, silhouettes, lookup, v, reference, i, soft, width);
+}
+#endif
 
 // The debug view: the signed distance map where the receiver looks it up,
 // 0.5 on the silhouette, darker on the occluder's side.
+float silhouetteCubeDebug(samplerCube silhouettes, vec3 center, vec4 positionWC, int i)
+{
+  return clamp(0.5 - 0.5 * texture(silhouettes, positionWC.xyz - center).r / silhouetteBand[i].x,
+    0.0, 1.0);
+}
+
 float silhouetteDebug(sampler2D silhouettes, mat4 worldToMap, vec4 receiverWC, int i)
 {
   vec3 p;

@@ -102,6 +102,41 @@ inline vtkSmartPointer<vtkRenderWindow> Show(vtkRenderer* renderer, int width, i
   return window;
 }
 
+/// A point light of radius `lightRadius` inside a closed 8 x 8 x 8 room, one
+/// box towards each of the six walls, seen from a corner; returns the light.
+inline vtkLight* BuildRoom(vtkRenderer* renderer, double lightRadius)
+{
+  const double wall[3] = { 0.9, 0.9, 0.9 };
+  vtkNew<vtkCubeSource> room;
+  room->SetXLength(8);
+  room->SetYLength(8);
+  room->SetZLength(8);
+  AddActor(renderer, room, wall);
+
+  const double boxes[6][3] = { { 1.6, 0, 0 }, { -1.6, 0, 0 }, { 0, 1.6, 0 }, { 0, -1.6, 0 },
+    { 0, 0, 1.6 }, { 0, 0, -1.6 } };
+  const double colors[6][3] = { { 0.9, 0.3, 0.3 }, { 0.3, 0.9, 0.9 }, { 0.3, 0.9, 0.3 },
+    { 0.9, 0.3, 0.9 }, { 0.9, 0.9, 0.3 }, { 0.3, 0.3, 0.9 } };
+  for (int i = 0; i < 6; ++i)
+  {
+    vtkNew<vtkCubeSource> box;
+    box->SetCenter(boxes[i][0], boxes[i][1], boxes[i][2]);
+    box->SetXLength(0.6);
+    box->SetYLength(0.6);
+    box->SetZLength(0.6);
+    AddActor(renderer, box, colors[i]);
+  }
+
+  const double center[3] = { 0, 0, 0 };
+  const double down[3] = { 0, -1, 0 };
+  vtkLight* light = AddLight(renderer, center, down, 180, lightRadius);
+
+  const double corner[3] = { -3.5, -3.5, 3.5 };
+  const double across[3] = { 1, 1, -1 };
+  SetCamera(renderer, corner, across, 100);
+  return light;
+}
+
 /// Fills `renderer` and returns its spot light.
 inline vtkLight* Build(vtkRenderer* renderer, double lightRadius, double ballHeight = 1.0)
 {

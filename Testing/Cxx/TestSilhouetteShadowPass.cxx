@@ -1,5 +1,5 @@
 // Regression images of the `silhouette` technique: run as
-//   TestSilhouetteShadowPass <ball|fence> <soft|hard> -V baseline ...
+//   TestSilhouetteShadowPass <ball|fence|room> <soft|hard> -V baseline ...
 // Penumbrae come from the light's radius (the default), so no tuning per scene.
 #include "vtkNew.h"
 #include "vtkRegressionTestImage.h"
@@ -16,13 +16,18 @@ int TestSilhouetteShadowPass(int argc, char* argv[])
 {
   if (argc < 3)
   {
-    std::cerr << "usage: TestSilhouetteShadowPass <ball|fence> <soft|hard> ...\n";
+    std::cerr << "usage: TestSilhouetteShadowPass <ball|fence|room> <soft|hard> ...\n";
     return EXIT_FAILURE;
   }
   vtkNew<vtkRenderer> renderer;
+  const bool room = std::strcmp(argv[1], "room") == 0;
   if (std::strcmp(argv[1], "fence") == 0)
   {
     ShadowTestScene::BuildFence(renderer, 0.3);
+  }
+  else if (room)
+  {
+    ShadowTestScene::BuildRoom(renderer, 0.25); // a point light: six cube faces
   }
   else
   {
@@ -30,14 +35,15 @@ int TestSilhouetteShadowPass(int argc, char* argv[])
   }
 
   vtkNew<vtkSilhouetteShadowPass> pass;
-  pass->SetMapSize(1024);
+  pass->SetMapSize(room ? 512 : 1024);
   if (std::strcmp(argv[2], "hard") == 0)
   {
     pass->SetVariantToHard();
   }
   renderer->SetPass(pass);
 
-  vtkSmartPointer<vtkRenderWindow> window = ShadowTestScene::Show(renderer, 320, 240);
+  vtkSmartPointer<vtkRenderWindow> window =
+    ShadowTestScene::Show(renderer, room ? 240 : 320, room ? 180 : 240);
 
   int result = vtkRegressionTestImage(window);
   return result == vtkRegressionTester::FAILED ? EXIT_FAILURE : EXIT_SUCCESS;
