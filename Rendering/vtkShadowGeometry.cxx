@@ -68,8 +68,8 @@ void vtkShadowGeometry::Upload(vtkShaderProgram* program)
     {
       if (program->IsAttributeUsed(a.Name.c_str()))
       {
-        this->VAO->AddAttributeArray(program, a.Buffer, a.Name, 0,
-          sizeof(float) * a.Components, VTK_FLOAT, a.Components, false);
+        this->VAO->AddAttributeArray(program, a.Buffer, a.Name, 0, sizeof(float) * a.Components,
+          VTK_FLOAT, a.Components, false);
       }
     }
     this->VAO->Release();

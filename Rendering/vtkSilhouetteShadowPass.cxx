@@ -27,6 +27,7 @@
 #include <glm/trigonometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -246,7 +247,8 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
       light.Textures.resize(2);
     }
     const unsigned int target = light.Point ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
-    if (!light.Textures[0] || light.Textures[0]->GetWidth() != static_cast<unsigned>(this->MapSize) ||
+    if (!light.Textures[0] ||
+      light.Textures[0]->GetWidth() != static_cast<unsigned>(this->MapSize) ||
       light.Textures[0]->GetTarget() != target)
     {
       if (light.Point)
@@ -273,8 +275,8 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
       static_cast<double>(rows), band.HalfWidth, band.MaximumPenumbra, this->EdgeWidth, spread };
     if (!light.Textures[1] || band.LookupKey != key)
     {
-      std::vector<float> lookup = BuildLookup(this->LookupTexels, rows, band.HalfWidth,
-        band.MaximumPenumbra, this->EdgeWidth, spread);
+      std::vector<float> lookup = BuildLookup(
+        this->LookupTexels, rows, band.HalfWidth, band.MaximumPenumbra, this->EdgeWidth, spread);
       light.Textures[1] = vtkSmartPointer<vtkTextureObject>::New();
       light.Textures[1]->SetContext(context);
       light.Textures[1]->SetMinificationFilter(vtkTextureObject::Linear);
@@ -303,6 +305,10 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
     setup.Draw = vtkShadowDrawSetup::Props::None;
     const float halfWidth = band.HalfWidth;
     const float mapSize = static_cast<float>(this->MapSize);
+    // Each face's w_sc from the light unless the expected width is given.
+    const float widestKept = band.MaximumPenumbra;
+    const std::array<float, 4> range = { band.Range[0], band.Range[1], band.Range[2],
+      this->ExpectedWidth > 0.0 ? 0.0f : band.Range[3] };
     for (const auto& mesh : meshes)
     {
       const vtkShadowCaster& caster = *mesh.first;
@@ -314,8 +320,10 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
       mesh.second->SetShaders(vtkSilhouetteEdgesVS,
         light.Point ? this->Internal->CubeFaceShader : std::string(vtkSilhouetteEdgesFS));
       mesh.second->SetUniforms(
-        [lightMC, halfWidth, mapSize, depthMap](vtkShaderProgram* program)
+        [lightMC, halfWidth, mapSize, depthMap, widestKept, range](vtkShaderProgram* program)
         {
+          program->SetUniform4f("silhouetteDepthRange", range.data());
+          program->SetUniformf("silhouetteWidest", widestKept);
           if (depthMap)
           {
             program->SetUniformi("silhouetteDepthMap", depthMap->GetTextureUnit());

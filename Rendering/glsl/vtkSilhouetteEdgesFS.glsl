@@ -12,7 +12,8 @@
 
 flat in vec3 silhouetteCorner[3];
 flat in int silhouetteEdges;
-uniform float silhouetteHalfWidth;  // w_sc, texels
+flat in float silhouetteReach; // this face's w_sc
+uniform float silhouetteHalfWidth;  // the widest w_sc, texels: the map's distance range
 #ifndef SILHOUETTE_CUBE_FACE
 uniform sampler2DShadow silhouetteDepthMap; // pass 1's depth map (nearest)
 #endif
@@ -52,7 +53,7 @@ void main()
       side = abs(face) < 1.0e-6 ? 0.0 : (silhouetteCross(a.xy, b.xy, p) * face >= 0.0 ? 1.0 : -1.0);
     }
   }
-  if (nearest > silhouetteHalfWidth)
+  if (nearest > silhouetteReach)
   {
     discard; // outside the thick silhouette
   }

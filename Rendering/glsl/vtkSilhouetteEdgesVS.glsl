@@ -18,9 +18,16 @@ uniform mat4 vtkShadowModelToClip;
 uniform vec4 silhouetteLightMC;  // w = 1: the light's position; w = 0: towards the light
 uniform float silhouetteMapSize; // texels across the map
 uniform float silhouetteHalfWidth; // w_sc: half the minimum silhouette width, texels
+// Sizing w_sc from the light (silhouetteDepthRange.w > 0): near, far, 1 if
+// parallel, K as the receivers' (vtkSilhouetteLookupFS.glsl); the widest
+// penumbra half-width kept; w_sc is then the widest penumbra behind this
+// face (a receiver at the far plane) plus a texel diagonal.
+uniform vec4 silhouetteDepthRange;
+uniform float silhouetteWidest;
 
 flat out vec3 silhouetteCorner[3]; // the face's corners: texel x, y and depth in [0, 1]
 flat out int silhouetteEdges;      // bit k: edge V(k)V(k+1) is a silhouette
+flat out float silhouetteReach;    // this face's w_sc
 
 // Eq. 1: an edge is a silhouette when the face and its neighbour face the
 // light differently, both seen from the edge's midpoint (so that the two
@@ -41,15 +48,29 @@ void main()
 
   vec2 t[3];
   bool behind = false;
+  float nearest = 1.0e30; // the face's distance along the light's axis
+  vec4 range = silhouetteDepthRange;
   for (int k = 0; k < 3; ++k)
   {
     vec4 clip = vtkShadowModelToClip * vec4(p[k], 1.0);
     behind = behind || clip.w <= 0.0;
     vec3 ndc = clip.xyz / clip.w;
+    nearest = min(nearest, range.z > 0.0 ? mix(range.x, range.y, 0.5 * ndc.z + 0.5) : clip.w);
     t[k] = (0.5 * ndc.xy + 0.5) * silhouetteMapSize;
     silhouetteCorner[k] = vec3(t[k], 0.5 * ndc.z + 0.5);
   }
   silhouetteEdges = edges;
+  // Eq. 2's w_sc: the expected width's half plus a texel diagonal (the
+  // expected width is twice the widest penumbra behind the face when sized
+  // from the light: K (f - e) or K (1/e - 1/f)).
+  float reach = silhouetteHalfWidth;
+  if (range.w > 0.0)
+  {
+    float e = max(nearest, range.x);
+    float widest = range.z > 0.0 ? range.w * (range.y - e) : range.w * (1.0 / e - 1.0 / range.y);
+    reach = min(max(widest, 1.0), silhouetteWidest) + 1.41421356;
+  }
+  silhouetteReach = reach;
   // The corner this vertex is: the TAM's vertices come in face order.
   int corner = gl_VertexID % 3;
   if (edges == 0 || behind)
@@ -94,7 +115,7 @@ void main()
   // every edge out by w_sc.
   vec2 incenter = (len[0] * t[0] + len[1] * t[1] + len[2] * t[2]) / perimeter;
   float inradius = area2 / perimeter;
-  float f = (inradius + silhouetteHalfWidth) / inradius;
+  float f = (inradius + reach) / inradius;
   vec2 grown = incenter + f * (t[corner] - incenter);
   gl_Position = vec4(grown / silhouetteMapSize * 2.0 - 1.0, 0.0, 1.0);
 }
