@@ -31,11 +31,15 @@ flat out float silhouetteReach;    // this face's w_sc
 
 // Eq. 1: an edge is a silhouette when the face and its neighbour face the
 // light differently, both seen from the edge's midpoint (so that the two
-// faces of an edge agree).
+// faces of an edge agree). Both faces would draw the same thick silhouette:
+// only the one facing the light does, which halves the pass's fill; a border
+// (or non-manifold) edge, stored with -n_f, has no other face to draw it.
 bool silhouetteEdge(vec3 a, vec3 b, vec3 face, vec3 neighbour)
 {
   vec3 v = silhouetteLightMC.w > 0.0 ? silhouetteLightMC.xyz - 0.5 * (a + b) : silhouetteLightMC.xyz;
-  return (dot(face, v) > 0.0) != (dot(neighbour, v) > 0.0);
+  bool facing = dot(face, v) > 0.0;
+  bool border = dot(face, neighbour) < -0.9999 * length(face);
+  return facing != (dot(neighbour, v) > 0.0) && (facing || border);
 }
 
 void main()
