@@ -46,7 +46,7 @@ struct CasterMesh
   bool Dropped = false; ///< built with DropNonSilhouetteFaces
 };
 
-// The fragment shader `source` for drawing into cube faces.
+// The shader `source` for drawing into cube faces.
 std::string CubeFace(const std::string& source)
 {
   const std::string tag = "//VTK::System::Dec";
@@ -77,8 +77,10 @@ struct vtkSilhouetteShadowPass::Internals
   };
   std::vector<Band> Bands;
   vtkShadowCasterCache<CasterMesh> Meshes;
-  // Pass 2's fragment shader for cube faces (no 2D depth map to read).
+  // Pass 2's shaders for cube faces (no 2D depth map to read).
+  std::string CubeFaceVertexShader = CubeFace(vtkSilhouetteEdgesVS);
   std::string CubeFaceShader = CubeFace(vtkSilhouetteEdgesFS);
+  bool SamplersReported = false;
   bool PackedReported = false;
 };
 
@@ -129,6 +131,17 @@ std::vector<float> BuildLookup(
 //------------------------------------------------------------------------------
 bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
 {
+  auto* context = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
+  if (!this->Screen->SupportsSamplers())
+  {
+    if (!this->Internal->SamplersReported)
+    {
+      vtkErrorMacro("Silhouette shadows need OpenGL 3.3 or ARB_sampler_objects to read shadow-map "
+                    "depths; drawing without shadows.");
+      this->Internal->SamplersReported = true;
+    }
+    return false;
+  }
   // Pass 1: depth, as `hard` draws it. Receivers gather four texels of a
   // point light's cube of squared distances: float ones.
   if (this->PackedCubeMaps)
@@ -144,7 +157,6 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
   {
     return false;
   }
-  auto* context = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
   auto& lights = this->Maps->GetLights();
   const bool soft = this->Variant == Soft;
 
@@ -317,7 +329,8 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
       const float lightMC[4] = { static_cast<float>(toLight.x), static_cast<float>(toLight.y),
         static_cast<float>(toLight.z), light.Directional ? 0.0f : 1.0f };
       vtkTextureObject* depthMap = light.Point ? nullptr : light.DepthMap.Get();
-      mesh.second->SetShaders(vtkSilhouetteEdgesVS,
+      mesh.second->SetShaders(
+        light.Point ? this->Internal->CubeFaceVertexShader : std::string(vtkSilhouetteEdgesVS),
         light.Point ? this->Internal->CubeFaceShader : std::string(vtkSilhouetteEdgesFS));
       mesh.second->SetUniforms(
         [lightMC, halfWidth, mapSize, depthMap, widestKept, range](vtkShaderProgram* program)
@@ -326,7 +339,7 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
           program->SetUniformf("silhouetteWidest", widestKept);
           if (depthMap)
           {
-            program->SetUniformi("silhouetteDepthMap", depthMap->GetTextureUnit());
+            program->SetUniformi("silhouetteDepths", depthMap->GetTextureUnit());
           }
           program->SetUniform4f("silhouetteLightMC", lightMC);
           program->SetUniformf("silhouetteMapSize", mapSize);
@@ -344,8 +357,11 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
     }
     else
     {
+      // Read raw through a sampler object: pass 1's depths.
       light.DepthMap->Activate();
+      this->Screen->BindRawDepth(light.DepthMap);
       drawn = this->Draw(s, setup);
+      this->Screen->UnbindSampler(light.DepthMap->GetTextureUnit());
       light.DepthMap->Deactivate();
     }
     if (!drawn)

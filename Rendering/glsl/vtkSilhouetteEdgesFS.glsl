@@ -15,7 +15,7 @@ flat in int silhouetteEdges;
 flat in float silhouetteReach; // this face's w_sc
 uniform float silhouetteHalfWidth;  // the widest w_sc, texels: the map's distance range
 #ifndef SILHOUETTE_CUBE_FACE
-uniform sampler2DShadow silhouetteDepthMap; // pass 1's depth map (nearest)
+uniform sampler2D silhouetteDepths; // pass 1's depths, raw
 #endif
 
 out vec4 fragOutput0; // r: signed distance (texels), g: the silhouette point's depth
@@ -65,8 +65,7 @@ void main()
     // seen edge-on has no side: there the depth map tells, at this texel's
     // centre as it was rasterized: covered by a surface not behind the
     // silhouette is inside.
-    side = texture(silhouetteDepthMap, vec3(p / vec2(textureSize(silhouetteDepthMap, 0)), depth)) > 0.5
-      ? -1.0 : 1.0;
+    side = depth <= texture(silhouetteDepths, p / vec2(textureSize(silhouetteDepths, 0))).r ? -1.0 : 1.0;
   }
 #else
   // A cube face: its map holds squared distances, not this face's depth;

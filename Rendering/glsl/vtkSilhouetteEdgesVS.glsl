@@ -24,6 +24,18 @@ uniform float silhouetteHalfWidth; // w_sc: half the minimum silhouette width, t
 // face (a receiver at the far plane) plus a texel diagonal.
 uniform vec4 silhouetteDepthRange;
 uniform float silhouetteWidest;
+#ifndef SILHOUETTE_CUBE_FACE
+// Pass 1's depths, raw (a sampler object without comparison): what lies
+// just past each silhouette edge is the receiver its penumbra falls on.
+uniform sampler2D silhouetteDepths;
+#endif
+
+// A map depth in [0, 1] as a distance along the light's axis.
+float silhouetteLinearDepth(vec4 range, float z)
+{
+  return range.z > 0.0 ? mix(range.x, range.y, z)
+                       : 2.0 * range.x * range.y / (range.y + range.x - (2.0 * z - 1.0) * (range.y - range.x));
+}
 
 flat out vec3 silhouetteCorner[3]; // the face's corners: texel x, y and depth in [0, 1]
 flat out int silhouetteEdges;      // bit k: edge V(k)V(k+1) is a silhouette
@@ -66,12 +78,36 @@ void main()
   silhouetteEdges = edges;
   // Eq. 2's w_sc: the expected width's half plus a texel diagonal (the
   // expected width is twice the widest penumbra behind the face when sized
-  // from the light: K (f - e) or K (1/e - 1/f)).
+  // from the light: K (r - e) or K (1/e - 1/r) for the farthest receiver r).
   float reach = silhouetteHalfWidth;
   if (range.w > 0.0)
   {
+    // The farthest receiver: the far plane, or, with a 2D depth map, the
+    // deepest of what lies 2 and 12 texels past each silhouette edge's ends
+    // and middle (nothing there: the far plane).
+    float farthest = range.y;
+#ifndef SILHOUETTE_CUBE_FACE
+    float deepest = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      if ((edges & (1 << k)) == 0)
+      {
+        continue;
+      }
+      vec2 a = t[k], b = t[(k + 1) % 3], c = t[(k + 2) % 3];
+      vec2 out2 = normalize(vec2(a.y - b.y, b.x - a.x) + vec2(1.0e-12, 0.0));
+      out2 *= dot(out2, c - a) > 0.0 ? -1.0 : 1.0;
+      for (int j = 0; j < 6; ++j)
+      {
+        vec2 at = mix(a, b, 0.5 * float(j % 3)) + out2 * (j < 3 ? 2.0 : 12.0);
+        deepest = max(deepest, textureLod(silhouetteDepths, at / silhouetteMapSize, 0.0).r);
+      }
+    }
+    farthest = deepest < 1.0 ? silhouetteLinearDepth(range, deepest) : range.y;
+#endif
     float e = max(nearest, range.x);
-    float widest = range.z > 0.0 ? range.w * (range.y - e) : range.w * (1.0 / e - 1.0 / range.y);
+    float r = max(farthest, e);
+    float widest = range.z > 0.0 ? range.w * (r - e) : range.w * (1.0 / e - 1.0 / r);
     reach = min(max(widest, 1.0), silhouetteWidest) + 1.41421356;
   }
   silhouetteReach = reach;
