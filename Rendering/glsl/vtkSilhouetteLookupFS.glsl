@@ -90,34 +90,21 @@ vec2 silhouetteEdge(vec4 d4, vec4 z4, vec2 f, float lit, int i, out vec2 across)
 }
 
 #if VTK_SHADOW_MAPS > 0
-// One sample at map point p of a spot or directional light; `edge` returns
-// its distance and silhouette depth, `fold` whether the light does not show
-// past its silhouette.
+// One sample at map point p of a spot or directional light.
 float silhouetteSample(sampler2DShadow map, sampler2D silhouettes, sampler2D lookup, vec3 p,
-  int i, bool soft, out float width, out vec2 edge, out bool fold)
+  int i, bool soft, out float width)
 {
   float lit = dot(textureGather(map, p.xy, p.z), vec4(1.0));
   vec2 f = fract(p.xy * silhouetteMapSize - 0.5);
   vec2 across;
-  edge = silhouetteEdge(textureGather(silhouettes, p.xy, 0),
+  vec2 edge = silhouetteEdge(textureGather(silhouettes, p.xy, 0),
     textureGather(silhouettes, p.xy, 1), f, lit, i, across);
-  fold = across != vec2(0.0) &&
-    dot(textureGather(map, p.xy + across / silhouetteMapSize, p.z), vec4(1.0)) == 0.0;
-  edge.x = fold ? -silhouetteBand[i].x : edge.x;
+  if (across != vec2(0.0) &&
+    dot(textureGather(map, p.xy + across / silhouetteMapSize, p.z), vec4(1.0)) == 0.0)
+  {
+    edge.x = -silhouetteBand[i].x;
+  }
   return silhouetteResolve(lookup, edge, p.z, lit == 0.0 ? 1.0 : 0.0, i, soft, width);
-}
-
-// One of the three outer samples, at map point q: its own shadow-map
-// verdict and distance (filtered by the hardware), the point's silhouette
-// depth and fold test, a fraction of a full sample's work.
-float silhouetteOuterSample(sampler2DShadow map, sampler2D silhouettes, sampler2D lookup, vec3 q,
-  float edgeDepth, bool fold, int i)
-{
-  float lit = dot(textureGather(map, q.xy, q.z), vec4(1.0));
-  float d = texture(silhouettes, q.xy).r;
-  d = d > 0.0 && (lit == 4.0 || (lit == 0.0 && fold)) ? -silhouetteBand[i].x : d;
-  float unused;
-  return silhouetteResolve(lookup, vec2(d, edgeDepth), q.z, lit == 0.0 ? 1.0 : 0.0, i, true, unused);
 }
 
 // Light i's visibility at a receiver point (already offset, world space).
@@ -133,9 +120,7 @@ float silhouetteVisibility(sampler2DShadow map, sampler2D silhouettes, sampler2D
     return 1.0;
   }
   float width;
-  vec2 edge;
-  bool fold;
-  float visibility = silhouetteSample(map, silhouettes, lookup, p, i, soft, width, edge, fold);
+  float visibility = silhouetteSample(map, silhouettes, lookup, p, i, soft, width);
   if (!soft)
   {
     return visibility;
@@ -143,8 +128,9 @@ float silhouetteVisibility(sampler2DShadow map, sampler2D silhouettes, sampler2D
   float reach = silhouetteSpread * width / silhouetteMapSize;
   for (int k = 0; k < 3; ++k)
   {
-    visibility += silhouetteOuterSample(
-      map, silhouettes, lookup, vec3(p.xy + reach * silhouetteAround[k], p.z), edge.y, fold, i);
+    float unused;
+    visibility += silhouetteSample(
+      map, silhouettes, lookup, vec3(p.xy + reach * silhouetteAround[k], p.z), i, soft, unused);
   }
   return 0.25 * visibility;
 }
