@@ -51,6 +51,7 @@ set(softshadows_rendering_shaders
   vtkShadowPackFS
   vtkShadowScreenCommonFS
   vtkShadowSurfaceFS
+  vtkSilhouetteCommon
   vtkSilhouetteEdgesFS
   vtkSilhouetteEdgesVS
   vtkSilhouetteLookupFS

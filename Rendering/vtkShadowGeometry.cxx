@@ -111,26 +111,24 @@ void vtkShadowGeometry::Upload(vtkShaderProgram* program)
 
   // Attributes the shaders do not use are neither uploaded nor bound; those
   // another program of this geometry uploaded stay.
-  auto add = [&](const std::string& name, vtkDataArray* array, int first, int components)
+  for (const Source& source : this->GetSources())
   {
-    if (!program->IsAttributeUsed(name.c_str()) ||
-      std::any_of(this->Attributes.begin(), this->Attributes.end(),
-        [&name](const Attribute& a) { return a.Name == name; }))
+    if (!program->IsAttributeUsed(source.Name.c_str()) || this->HasAttribute(source.Name))
     {
-      return;
+      continue;
     }
     std::vector<float> values;
-    values.reserve(corners.size() * components);
+    values.reserve(corners.size() * source.Components);
     for (vtkIdType id : corners)
     {
-      for (int c = 0; c < components; ++c)
+      for (int c = 0; c < source.Components; ++c)
       {
-        values.push_back(static_cast<float>(array->GetComponent(id, first + c)));
+        values.push_back(static_cast<float>(source.Array->GetComponent(id, source.First + c)));
       }
     }
     Attribute attribute;
-    attribute.Name = name;
-    attribute.Components = components;
+    attribute.Name = source.Name;
+    attribute.Components = source.Components;
     attribute.Buffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
     attribute.Buffer->SetType(vtkOpenGLBufferObject::ArrayBuffer);
     if (!values.empty())
@@ -138,10 +136,17 @@ void vtkShadowGeometry::Upload(vtkShaderProgram* program)
       attribute.Buffer->Upload(values, vtkOpenGLBufferObject::ArrayBuffer);
     }
     this->Attributes.push_back(attribute);
-  };
+  }
+  bind();
+}
+
+//------------------------------------------------------------------------------
+std::vector<vtkShadowGeometry::Source> vtkShadowGeometry::GetSources() const
+{
+  std::vector<Source> sources;
   if (this->Input->GetPoints())
   {
-    add("vtkShadowVertexMC", this->Input->GetPoints()->GetData(), 0, 3);
+    sources.push_back({ "vtkShadowVertexMC", this->Input->GetPoints()->GetData(), 0, 3 });
   }
   vtkPointData* pd = this->Input->GetPointData();
   for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
@@ -156,41 +161,31 @@ void vtkShadowGeometry::Upload(vtkShaderProgram* program)
     {
       for (int k = 0; k < 3; ++k)
       {
-        add(std::string(array->GetName()) + std::to_string(k), array, 3 * k, 3);
+        sources.push_back({ std::string(array->GetName()) + std::to_string(k), array, 3 * k, 3 });
       }
     }
     else if (components >= 1 && components <= 4)
     {
-      add(array->GetName(), array, 0, components);
+      sources.push_back({ array->GetName(), array, 0, components });
     }
   }
-  bind();
+  return sources;
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowGeometry::HasAttribute(const std::string& name) const
+{
+  return std::any_of(this->Attributes.begin(), this->Attributes.end(),
+    [&name](const Attribute& a) { return a.Name == name; });
 }
 
 //------------------------------------------------------------------------------
 bool vtkShadowGeometry::MissesAttributes(vtkShaderProgram* program) const
 {
-  std::vector<std::string> names = { "vtkShadowVertexMC" };
-  vtkPointData* pd = this->Input->GetPointData();
-  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
-  {
-    vtkDataArray* array = pd->GetArray(a);
-    if (array && array->GetName())
-    {
-      for (int k = 0; k < (array->GetNumberOfComponents() == 9 ? 3 : 1); ++k)
-      {
-        names.push_back(array->GetName() +
-          (array->GetNumberOfComponents() == 9 ? std::to_string(k) : std::string()));
-      }
-    }
-  }
-  return std::any_of(names.begin(), names.end(),
-    [this, program](const std::string& name)
-    {
-      return program->IsAttributeUsed(name.c_str()) &&
-        std::none_of(this->Attributes.begin(), this->Attributes.end(),
-          [&name](const Attribute& a) { return a.Name == name; });
-    });
+  const std::vector<Source> sources = this->GetSources();
+  return std::any_of(sources.begin(), sources.end(),
+    [this, program](const Source& source)
+    { return program->IsAttributeUsed(source.Name.c_str()) && !this->HasAttribute(source.Name); });
 }
 
 //------------------------------------------------------------------------------

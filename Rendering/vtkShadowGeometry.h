@@ -31,6 +31,7 @@
 #include <string>     // for std::string
 #include <vector>     // for std::vector
 
+class vtkDataArray;
 class vtkOpenGLBufferObject;
 class vtkOpenGLRenderWindow;
 class vtkOpenGLVertexArrayObject;
@@ -70,6 +71,16 @@ private:
   vtkShadowGeometry(const vtkShadowGeometry&) = delete;
   void operator=(const vtkShadowGeometry&) = delete;
 
+  /// One attribute the input offers: `Components` components of `Array` from `First`.
+  struct Source
+  {
+    std::string Name;
+    vtkDataArray* Array;
+    int First;
+    int Components;
+  };
+  std::vector<Source> GetSources() const;
+  bool HasAttribute(const std::string& name) const;
   void Upload(vtkShaderProgram* program);
   bool MissesAttributes(vtkShaderProgram* program) const;
 

@@ -20,6 +20,7 @@
 #include "vtkTopologyAwareMeshFilter.h"
 #include "vtk_glew.h"
 
+#include "vtkSilhouetteCommon.h"
 #include "vtkSilhouetteEdgesFS.h"
 #include "vtkSilhouetteEdgesVS.h"
 #include "vtkSilhouetteLookupFS.h"
@@ -46,12 +47,53 @@ struct CasterMesh
   bool Dropped = false; ///< built with DropNonSilhouetteFaces
 };
 
-// The shader `source` for drawing into cube faces.
-std::string CubeFace(const std::string& source)
+// The TAM of a caster's polydata, and the geometry that draws it (shaders:
+// set per light, for 2D maps or cube faces).
+void BuildMesh(vtkPolyData* data, bool drop, CasterMesh& mesh)
+{
+  // Faces meet where they share a point id: merge coincident points first
+  // (meshes drawn with flat normals, seams of parametric surfaces a rounding
+  // apart), or every edge there would be a border, always a silhouette.
+  vtkNew<vtkCleanPolyData> clean;
+  clean->SetInputData(data);
+  clean->SetTolerance(1.0e-6); // of the bounding box's diagonal
+  clean->ConvertLinesToPointsOff();
+  clean->ConvertPolysToLinesOff();
+  clean->ConvertStripsToPolysOff();
+  clean->Update();
+  // Faces only: lines and points have no silhouette to give.
+  auto faces = vtkSmartPointer<vtkPolyData>::New();
+  faces->SetPoints(clean->GetOutput()->GetPoints());
+  faces->SetPolys(clean->GetOutput()->GetPolys());
+  faces->SetStrips(clean->GetOutput()->GetStrips());
+  mesh.Filter = vtkSmartPointer<vtkTopologyAwareMeshFilter>::New();
+  mesh.Filter->SetInputData(faces);
+  mesh.Filter->SetDropNonSilhouetteFaces(drop);
+  mesh.Filter->Update();
+  // Only what the silhouette pass reads goes to the GPU.
+  vtkPolyData* tam = mesh.Filter->GetOutput();
+  auto buffer = vtkSmartPointer<vtkPolyData>::New();
+  buffer->SetPoints(tam->GetPoints());
+  buffer->SetPolys(tam->GetPolys());
+  buffer->GetPointData()->AddArray(tam->GetPointData()->GetArray("FacePositions"));
+  buffer->GetPointData()->AddArray(tam->GetPointData()->GetArray("AdjacentNormals"));
+  // Released with the entry (a new polydata, or the caster gone).
+  mesh.Geometry = std::shared_ptr<vtkShadowGeometry>(new vtkShadowGeometry,
+    [](vtkShadowGeometry* geometry)
+    {
+      geometry->ReleaseGraphicsResources(nullptr);
+      delete geometry;
+    });
+  mesh.Geometry->SetInput(buffer);
+  mesh.Dropped = drop;
+}
+
+// A pass-2 shader `source` with `prefix` put after its version line.
+std::string PassShader(const std::string& source, const std::string& prefix)
 {
   const std::string tag = "//VTK::System::Dec";
   std::string text = source;
-  text.insert(text.find(tag) + tag.size(), "\n#define SILHOUETTE_CUBE_FACE");
+  text.insert(text.find(tag) + tag.size(), "\n" + prefix);
   return text;
 }
 
@@ -77,9 +119,13 @@ struct vtkSilhouetteShadowPass::Internals
   };
   std::vector<Band> Bands;
   vtkShadowCasterCache<CasterMesh> Meshes;
-  // Pass 2's shaders for cube faces (no 2D depth map to read).
-  std::string CubeFaceVertexShader = CubeFace(vtkSilhouetteEdgesVS);
-  std::string CubeFaceShader = CubeFace(vtkSilhouetteEdgesFS);
+  // Pass 2's shaders, for 2D maps and for cube faces (no 2D depth map to read).
+  std::string VertexShader = PassShader(vtkSilhouetteEdgesVS, vtkSilhouetteCommon);
+  std::string FragmentShader = vtkSilhouetteEdgesFS;
+  std::string CubeFaceVertexShader = PassShader(
+    vtkSilhouetteEdgesVS, std::string("#define SILHOUETTE_CUBE_FACE\n") + vtkSilhouetteCommon);
+  std::string CubeFaceFragmentShader =
+    PassShader(vtkSilhouetteEdgesFS, "#define SILHOUETTE_CUBE_FACE");
   bool SamplersReported = false;
   bool PackedReported = false;
 };
@@ -170,46 +216,12 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
     {
       continue;
     }
-    CasterMesh& mesh = this->Internal->Meshes.Get(caster, [](vtkPolyData*, CasterMesh&) {});
-    if (!mesh.Geometry || mesh.Dropped != this->DropNonSilhouetteFaces)
+    const bool drop = this->DropNonSilhouetteFaces;
+    CasterMesh& mesh = this->Internal->Meshes.Get(
+      caster, [drop](vtkPolyData* data, CasterMesh& built) { BuildMesh(data, drop, built); });
+    if (mesh.Dropped != drop)
     {
-      // Faces meet where they share a point id: merge coincident points
-      // first (meshes drawn with flat normals, seams of parametric surfaces
-      // a rounding apart), or every edge there would be a border, always a
-      // silhouette.
-      vtkNew<vtkCleanPolyData> clean;
-      clean->SetInputData(caster.Data);
-      clean->SetTolerance(1.0e-6); // of the bounding box's diagonal
-      clean->ConvertLinesToPointsOff();
-      clean->ConvertPolysToLinesOff();
-      clean->ConvertStripsToPolysOff();
-      clean->Update();
-      // Faces only: lines and points have no silhouette to give.
-      auto faces = vtkSmartPointer<vtkPolyData>::New();
-      faces->SetPoints(clean->GetOutput()->GetPoints());
-      faces->SetPolys(clean->GetOutput()->GetPolys());
-      faces->SetStrips(clean->GetOutput()->GetStrips());
-      mesh.Filter = vtkSmartPointer<vtkTopologyAwareMeshFilter>::New();
-      mesh.Filter->SetInputData(faces);
-      mesh.Filter->SetDropNonSilhouetteFaces(this->DropNonSilhouetteFaces);
-      mesh.Filter->Update();
-      // Only what the silhouette pass reads goes to the GPU.
-      vtkPolyData* tam = mesh.Filter->GetOutput();
-      auto buffer = vtkSmartPointer<vtkPolyData>::New();
-      buffer->SetPoints(tam->GetPoints());
-      buffer->SetPolys(tam->GetPolys());
-      buffer->GetPointData()->AddArray(tam->GetPointData()->GetArray("FacePositions"));
-      buffer->GetPointData()->AddArray(tam->GetPointData()->GetArray("AdjacentNormals"));
-      // Released with the entry (a new polydata, or the caster gone).
-      mesh.Geometry = std::shared_ptr<vtkShadowGeometry>(new vtkShadowGeometry,
-        [](vtkShadowGeometry* geometry)
-        {
-          geometry->ReleaseGraphicsResources(nullptr);
-          delete geometry;
-        });
-      mesh.Geometry->SetInput(buffer);
-      mesh.Geometry->SetShaders(vtkSilhouetteEdgesVS, vtkSilhouetteEdgesFS);
-      mesh.Dropped = this->DropNonSilhouetteFaces;
+      BuildMesh(caster.Data, drop, mesh); // the option changed, not the data
     }
     mesh.Geometry->SetModelToWorld(caster.ModelToWorld);
     meshes.emplace_back(&caster, mesh.Geometry.get());
@@ -330,8 +342,8 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
         static_cast<float>(toLight.z), light.Directional ? 0.0f : 1.0f };
       vtkTextureObject* depthMap = light.Point ? nullptr : light.DepthMap.Get();
       mesh.second->SetShaders(
-        light.Point ? this->Internal->CubeFaceVertexShader : std::string(vtkSilhouetteEdgesVS),
-        light.Point ? this->Internal->CubeFaceShader : std::string(vtkSilhouetteEdgesFS));
+        light.Point ? this->Internal->CubeFaceVertexShader : this->Internal->VertexShader,
+        light.Point ? this->Internal->CubeFaceFragmentShader : this->Internal->FragmentShader);
       mesh.second->SetUniforms(
         [lightMC, halfWidth, mapSize, depthMap, widestKept, range](vtkShaderProgram* program)
         {
@@ -405,7 +417,7 @@ std::vector<vtkSoftShadowPass::ReceiverTexture> vtkSilhouetteShadowPass::GetRece
 //------------------------------------------------------------------------------
 std::string vtkSilhouetteShadowPass::GetVisibilityDeclarations()
 {
-  return vtkSilhouetteLookupFS;
+  return std::string(vtkSilhouetteCommon) + vtkSilhouetteLookupFS;
 }
 
 //------------------------------------------------------------------------------

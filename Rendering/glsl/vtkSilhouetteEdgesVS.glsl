@@ -5,7 +5,7 @@
 // without one, and grows the face about its incenter so that it covers the
 // thick silhouette around its edges. Everything after the edge test is in
 // the map's texel space (the viewport is the map).
-// Uses: nothing else.
+// Uses: vtkSilhouetteCommon.glsl (put after the version line by the pass).
 
 in vec3 FacePositions0; // V1, V2, V3: the face's corners, model space
 in vec3 FacePositions1;
@@ -29,13 +29,6 @@ uniform float silhouetteWidest;
 // just past each silhouette edge is the receiver its penumbra falls on.
 uniform sampler2D silhouetteDepths;
 #endif
-
-// A map depth in [0, 1] as a distance along the light's axis.
-float silhouetteLinearDepth(vec4 range, float z)
-{
-  return range.z > 0.0 ? mix(range.x, range.y, z)
-                       : 2.0 * range.x * range.y / (range.y + range.x - (2.0 * z - 1.0) * (range.y - range.x));
-}
 
 flat out vec3 silhouetteCorner[3]; // the face's corners: texel x, y and depth in [0, 1]
 flat out int silhouetteEdges;      // bit k: edge V(k)V(k+1) is a silhouette

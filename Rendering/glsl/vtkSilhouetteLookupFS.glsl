@@ -4,7 +4,8 @@
 // silhouette point's depth) and its lookup texture, which holds four
 // segments side by side (eq. 4), each of silhouetteLookupTexels texels, and
 // one row per penumbra width (section 2.2.1; one row for hard shadows).
-// Uses: vtkSoftShadowReceiverFS.glsl (vtkShadowInMap), declared before it.
+// Uses: vtkSoftShadowReceiverFS.glsl (vtkShadowInMap), declared before it;
+// vtkSilhouetteCommon.glsl.
 
 uniform vec4 silhouetteDepthRange[VTK_SHADOW_LIGHTS]; // near, far, 1 if parallel, K
 uniform vec2 silhouetteBand[VTK_SHADOW_LIGHTS]; // W: distances span [-W, W]; Wmax: widest penumbra
@@ -14,13 +15,6 @@ uniform float silhouetteEdgeBias;   // in map depth: how far in front a silhouet
 uniform vec2 silhouetteLookupTexels; // texels per segment, rows
 // Where section 2.2.1's three outer samples lie, in units of their reach.
 const vec2 silhouetteAround[3] = vec2[3](vec2(0.0, 1.0), vec2(-0.8660254, -0.5), vec2(0.8660254, -0.5));
-
-// A map depth in [0, 1] as a distance along the light's axis.
-float silhouetteLinearDepth(vec4 range, float z)
-{
-  return range.z > 0.0 ? mix(range.x, range.y, z)
-                       : 2.0 * range.x * range.y / (range.y + range.x - (2.0 * z - 1.0) * (range.y - range.x));
-}
 
 // The penumbra's half-width in texels at a receiver of map depth z behind a
 // silhouette of map depth edge: K (r - e) for a directional light's angular
@@ -184,9 +178,7 @@ float silhouetteCubeSample(samplerCube distances, samplerCube silhouettes, sampl
   {
     edge.x = -silhouetteBand[i].x;
   }
-  vec4 range = silhouetteDepthRange[i];
-  float z = 0.5 * ((range.y + range.x) / (range.y - range.x) -
-    2.0 * range.y * range.x / ((range.y - range.x) * axis)) + 0.5;
+  float z = silhouettePerspectiveDepth(silhouetteDepthRange[i], axis);
   return silhouetteResolve(lookup, edge, z, lit == 0.0 ? 1.0 : 0.0, i, soft, width);
 }
 
@@ -201,7 +193,8 @@ float silhouetteCubeVisibility(samplerCube distances, samplerCube silhouettes, s
     center, positionWC, normalWC, vtkShadowCubeTexel, vtkShadowNormalBias, size);
   float reference = dot(v, v) * vtkShadowDistanceBias;
   // One sample: the three outer ones of section 2.2.1 drew faint arcs
-  // beyond the penumbrae on cube faces (docs/quality.md), not yet understood.
+  // beyond the penumbrae on cube faces (docs/architecture.md), not yet
+  // understood.
   float width;
   return silhouetteCubeSample(distances, silhouettes, lookup, v, reference, i, soft, width);
 }
