@@ -7,6 +7,7 @@ set(softshadows_rendering_classes
   vtkRayCastLightVisibility
   vtkReferenceShadowPass
   vtkSilhouetteShadowPass
+  vtkSmoothieShadowPass
   vtkSoftShadowPass)
 
 # The framework the techniques stand on: installed, so that a technique can
@@ -55,6 +56,10 @@ set(softshadows_rendering_shaders
   vtkSilhouetteEdgesFS
   vtkSilhouetteEdgesVS
   vtkSilhouetteLookupFS
+  vtkSmoothieEdgesFS
+  vtkSmoothieEdgesGS
+  vtkSmoothieEdgesVS
+  vtkSmoothieLookupFS
   vtkSoftShadowReceiverFS)
 
 # Sets <sources_var> and <headers_var> to the generated C strings of the

@@ -17,11 +17,12 @@
 void vtkShadowDistanceStage::Begin(const vtkShadowDrawSetup& setup)
 {
   // Layered draws run the vertex shader for face 0; all faces share the eye.
-  const auto& face = (*setup.Faces)[std::max(setup.CubeFace, 0)];
+  const auto& face = setup.Faces ? (*setup.Faces)[std::max(setup.CubeFace, 0)] : *setup.View;
   const glm::mat4 clipToView(glm::inverse(face.Projection));
   std::copy(glm::value_ptr(clipToView), glm::value_ptr(clipToView) + 16, this->FaceClipToView);
   this->FaceSize = static_cast<float>(setup.Colours[0]->GetWidth());
-  this->FaceRange = this->Packed ? static_cast<float>(face.Far * face.Far) : 0.0f;
+  this->FaceRange =
+    this->Packed && !this->LinearDepth ? static_cast<float>(face.Far * face.Far) : 0.0f;
 }
 
 //------------------------------------------------------------------------------
@@ -42,4 +43,6 @@ void vtkShadowDistanceStage::SetUniforms(vtkShaderProgram* program, vtkProp*)
   program->SetUniformMatrix4x4("vtkShadowFaceClipToView", this->FaceClipToView);
   program->SetUniformf("vtkShadowFaceSize", this->FaceSize);
   program->SetUniformf("vtkShadowFaceRange", this->FaceRange);
+  program->SetUniformi("vtkShadowFaceLinear", this->LinearDepth ? 1 : 0);
+  program->SetUniformf("vtkShadowFaceSlopeBias", this->SlopeBias);
 }

@@ -29,6 +29,16 @@ void vtkShadowGeometry::SetInput(vtkPolyData* data)
 }
 
 //------------------------------------------------------------------------------
+void vtkShadowGeometry::SetPrimitive(Primitive primitive)
+{
+  if (primitive != this->Kind)
+  {
+    this->Kind = primitive;
+    this->UploadTime = 0;
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkShadowGeometry::SetShaders(
   const std::string& vertex, const std::string& fragment, const std::string& geometry)
 {
@@ -81,31 +91,33 @@ void vtkShadowGeometry::Upload(vtkShaderProgram* program)
     return;
   }
 
-  // The triangles' corners, in order: every attribute expanded alike.
+  // The primitives' corners, in order: every attribute expanded alike.
+  const bool lines = this->Kind == Primitive::LinesAdjacency;
+  const vtkIdType size = lines ? 4 : 3;
   std::vector<vtkIdType> corners;
-  vtkCellArray* polys = this->Input->GetPolys();
+  vtkCellArray* cells = lines ? this->Input->GetLines() : this->Input->GetPolys();
   const vtkIdType numberOfPoints = this->Input->GetNumberOfPoints();
   vtkIdType n = 0;
   const vtkIdType* ids = nullptr;
-  bool reported = current; // the skipped triangles were reported at the first upload
-  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
+  bool reported = current; // the skipped cells were reported at the first upload
+  for (cells->InitTraversal(); cells->GetNextCell(n, ids);)
   {
-    if (n != 3)
+    if (n != size)
     {
-      continue; // triangles only
+      continue; // triangles (or 4-point lines) only
     }
-    if (ids[0] < 0 || ids[1] < 0 || ids[2] < 0 || ids[0] >= numberOfPoints ||
-      ids[1] >= numberOfPoints || ids[2] >= numberOfPoints)
+    if (std::any_of(
+          ids, ids + n, [numberOfPoints](vtkIdType id) { return id < 0 || id >= numberOfPoints; }))
     {
       if (!reported)
       {
-        vtkGenericWarningMacro("vtkShadowGeometry: a triangle names a point that does not exist; "
+        vtkGenericWarningMacro("vtkShadowGeometry: a cell names a point that does not exist; "
                                "it is skipped.");
         reported = true;
       }
       continue;
     }
-    corners.insert(corners.end(), ids, ids + 3);
+    corners.insert(corners.end(), ids, ids + n);
   }
   this->Vertices = static_cast<int>(corners.size());
 
@@ -202,7 +214,9 @@ vtkIdType vtkShadowGeometry::GetUploadedBytes() const
 //------------------------------------------------------------------------------
 bool vtkShadowGeometry::Draw(vtkOpenGLRenderWindow* context, const glm::dmat4& worldToClip)
 {
-  if (!this->Input || this->Input->GetNumberOfPolys() == 0)
+  if (!this->Input ||
+    (this->Kind == Primitive::LinesAdjacency ? this->Input->GetNumberOfLines()
+                                             : this->Input->GetNumberOfPolys()) == 0)
   {
     return true; // nothing to draw
   }
@@ -234,7 +248,8 @@ bool vtkShadowGeometry::Draw(vtkOpenGLRenderWindow* context, const glm::dmat4& w
     this->Uniforms(program);
   }
   this->VAO->Bind();
-  glDrawArrays(GL_TRIANGLES, 0, this->Vertices);
+  glDrawArrays(
+    this->Kind == Primitive::LinesAdjacency ? GL_LINES_ADJACENCY : GL_TRIANGLES, 0, this->Vertices);
   this->VAO->Release();
   return true;
 }

@@ -10,8 +10,10 @@
  * components (three vec3, as vtkTopologyAwareMeshFilter writes) the three
  * vec3 attributes `<name>0`, `<name>1`, `<name>2`. Triangles are drawn as
  * they come (3 vertices each, no index buffer: a TAM's vertices are per face
- * anyway). The data is uploaded on the first Draw() after it changed, only
- * the attributes the shaders use.
+ * anyway); with SetPrimitive(LinesAdjacency), the input's 4-point lines are
+ * drawn as GL_LINES_ADJACENCY, for a geometry shader to build triangles from
+ * (smoothies' silhouette edges). The data is uploaded on the first Draw()
+ * after it changed, only the attributes the shaders use.
  *
  * The shaders are the technique's, each beginning with //VTK::System::Dec;
  * they declare what they use of `uniform mat4 vtkShadowModelToClip` (model
@@ -46,6 +48,13 @@ public:
   ~vtkShadowGeometry();
 
   void SetInput(vtkPolyData* data);
+  /// What the input's cells are drawn as.
+  enum class Primitive
+  {
+    Triangles,     ///< its 3-point polygons (default)
+    LinesAdjacency ///< its 4-point lines
+  };
+  void SetPrimitive(Primitive primitive);
   void SetShaders(const std::string& vertex, const std::string& fragment,
     const std::string& geometry = std::string());
   void SetModelToWorld(const glm::dmat4& modelToWorld) { this->ModelToWorld = modelToWorld; }
@@ -56,7 +65,7 @@ public:
     this->Uniforms = uniforms;
   }
 
-  /// Number of vertices drawn (3 a triangle).
+  /// Number of vertices drawn (3 a triangle, 4 a line with adjacency).
   int GetNumberOfVertices() const { return this->Vertices; }
 
   /// Bytes of the vertex buffers on the GPU: the attributes the shaders use.
@@ -91,6 +100,7 @@ private:
     vtkSmartPointer<vtkOpenGLBufferObject> Buffer;
   };
   vtkSmartPointer<vtkPolyData> Input;
+  Primitive Kind = Primitive::Triangles;
   vtkMTimeType UploadTime = 0;
   std::vector<Attribute> Attributes;
   int Vertices = 0;

@@ -329,8 +329,11 @@ void vtkSoftShadowPass::vtkReceiverStage::SetUniforms(vtkShaderProgram* program,
     }
     vtkShadowMapManager::SetFrustumUniforms(
       program, "vtkShadow", "[" + std::to_string(i) + "]", light.Map, pass->MapSize);
-    program->SetUniformi(
-      Indexed("vtkShadowMap", light.MapIndex).c_str(), light.DepthMap->GetTextureUnit());
+    if (light.DepthMap) // techniques with maps of their own may not draw it
+    {
+      program->SetUniformi(
+        Indexed("vtkShadowMap", light.MapIndex).c_str(), light.DepthMap->GetTextureUnit());
+    }
   }
   if (pass->UsesScreenSpace())
   {
@@ -478,7 +481,10 @@ void vtkSoftShadowPass::RenderReceivers(const vtkRenderState* s, bool screenSpac
   auto& shadowed = this->Maps->GetLights();
   for (auto& light : shadowed)
   {
-    (light.Point ? light.CubeMap : light.DepthMap)->Activate();
+    if (vtkTextureObject* map = light.Point ? light.CubeMap : light.DepthMap)
+    {
+      map->Activate();
+    }
   }
   if (screenSpace)
   {
@@ -545,7 +551,10 @@ void vtkSoftShadowPass::RenderReceivers(const vtkRenderState* s, bool screenSpac
   }
   for (auto& light : shadowed)
   {
-    (light.Point ? light.CubeMap : light.DepthMap)->Deactivate();
+    if (vtkTextureObject* map = light.Point ? light.CubeMap : light.DepthMap)
+    {
+      map->Deactivate();
+    }
   }
 }
 

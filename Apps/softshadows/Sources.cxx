@@ -2,6 +2,7 @@
 
 #include "vtkFenceSource.h"
 
+#include <vtkCellArray.h>
 #include <vtkConeSource.h>
 #include <vtkCubeSource.h>
 #include <vtkCylinderSource.h>
@@ -110,6 +111,76 @@ vtkSmartPointer<vtkPolyData> MakeTorus(const Json& p)
   transform->SetTransform(flat);
   transform->SetInputConnection(surface->GetOutputPort());
   return Output(transform);
+}
+
+// A (p, q) torus knot: a tube of radius `tube` around the curve winding p
+// times around the y axis and q times through the hole of a torus of radii
+// R and r. Its frame (the tangent, and the direction from the torus's core
+// circle made normal to it) is periodic, so the quad mesh closes on itself
+// without a seam: closed and manifold, every face shadowing another.
+vtkSmartPointer<vtkPolyData> MakeKnot(const Json& params)
+{
+  const int p = params["p"].get<int>();
+  const int q = params["q"].get<int>();
+  const double ring = params["ring_radius"].get<double>();
+  const double wind = params["winding_radius"].get<double>();
+  const double tube = params["tube_radius"].get<double>();
+  const int around = params["resolution"].get<int>();
+  const int across = std::max(3, around / 16);
+  auto curve = [&](double t)
+  {
+    const double w = ring + wind * std::cos(q * t);
+    return std::array<double, 3>{ { w * std::cos(p * t), wind * std::sin(q * t),
+      w * std::sin(p * t) } };
+  };
+  vtkNew<vtkPoints> points;
+  points->SetNumberOfPoints(static_cast<vtkIdType>(around) * across);
+  const double step = 2.0 * vtkMath::Pi() / around;
+  for (int i = 0; i < around; ++i)
+  {
+    const double t = i * step;
+    const auto c = curve(t);
+    const auto ahead = curve(t + 1.0e-4);
+    const auto behind = curve(t - 1.0e-4);
+    double tangent[3] = { ahead[0] - behind[0], ahead[1] - behind[1], ahead[2] - behind[2] };
+    vtkMath::Normalize(tangent);
+    double normal[3] = { c[0] - ring * std::cos(p * t), c[1], c[2] - ring * std::sin(p * t) };
+    const double along = vtkMath::Dot(normal, tangent);
+    for (int k = 0; k < 3; ++k)
+    {
+      normal[k] -= along * tangent[k];
+    }
+    vtkMath::Normalize(normal);
+    double binormal[3];
+    vtkMath::Cross(tangent, normal, binormal);
+    for (int j = 0; j < across; ++j)
+    {
+      const double a = 2.0 * vtkMath::Pi() * j / across;
+      const double x = tube * std::cos(a), y = tube * std::sin(a);
+      points->SetPoint(static_cast<vtkIdType>(i) * across + j,
+        c[0] + x * normal[0] + y * binormal[0], c[1] + x * normal[1] + y * binormal[1],
+        c[2] + x * normal[2] + y * binormal[2]);
+    }
+  }
+  vtkNew<vtkCellArray> quads;
+  for (int i = 0; i < around; ++i)
+  {
+    for (int j = 0; j < across; ++j)
+    {
+      auto id = [&](int a, int b)
+      { return static_cast<vtkIdType>((a % around) * across + (b % across)); };
+      const vtkIdType quad[4] = { id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1) };
+      quads->InsertNextCell(4, quad);
+    }
+  }
+  vtkNew<vtkPolyData> mesh;
+  mesh->SetPoints(points);
+  mesh->SetPolys(quads);
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputData(mesh);
+  normals->SplittingOff();
+  normals->AutoOrientNormalsOn(); // outwards, whatever the frame's handedness
+  return Output(normals);
 }
 
 vtkSmartPointer<vtkPolyData> MakeFence(const Json& p)
@@ -223,6 +294,19 @@ const std::vector<Source>& Sources()
           "segments around the axis (half as many around the tube)" },
       },
       MakeTorus },
+    { "knot", "a tube along a (p, q) torus knot lying flat (axis y), centred on the origin",
+      {
+        { "p", ValueType::Integer, Range::Between(1, 32), 2, "turns around the y axis" },
+        { "q", ValueType::Integer, Range::Between(1, 32), 3, "turns through the hole" },
+        { "ring_radius", ValueType::Number, Range::Positive(), 0.5,
+          "from the axis to the torus the knot winds on" },
+        { "winding_radius", ValueType::Number, Range::Positive(), 0.25,
+          "radius of that torus's tube, which the knot winds around" },
+        { "tube_radius", ValueType::Number, Range::Positive(), 0.1, "radius of the knot's tube" },
+        { "resolution", ValueType::Integer, Range::Between(48, 16384), 384,
+          "segments along the knot (a sixteenth as many around its tube)" },
+      },
+      MakeKnot },
     { "fence", "vtkFenceSource: pickets on two rails, standing on y = 0 along x",
       {
         { "pickets", ValueType::Integer, Range::Between(1, 1000), 7, "number of pickets" },

@@ -5,6 +5,7 @@
 #include "vtkOmnidirectionalShadowPass.h"
 #include "vtkReferenceShadowPass.h"
 #include "vtkSilhouetteShadowPass.h"
+#include "vtkSmoothieShadowPass.h"
 #include "vtkSoftShadowPass.h"
 
 #include <vtkCameraPass.h>
@@ -387,6 +388,35 @@ const std::vector<Technique>& Techniques()
         }
         return Wrap(pass);
       } },
+    { "smoothies",
+      "vtkSmoothieShadowPass: smoothies (Chan & Durand, as Volokh implements them): soft shadow "
+      "edges from geometry extruded along the casters' silhouettes as seen from the light, "
+      "outside a hard shadow-map umbra",
+      {},
+      WithCommonParameters({
+        Bind<vtkSmoothieShadowPass, double>("thickness", ValueType::Number,
+          Range::Between(0.0, 256.0),
+          "fixed smoothie thickness in shadow-map texels, with the report's alpha / (1 - b/r); "
+          "0 sizes it from the light's radius (the outer half of its penumbra)",
+          &vtkSmoothieShadowPass::SetThickness, &vtkSmoothieShadowPass::GetThickness),
+        Bind<vtkSmoothieShadowPass, double>("penumbra_scale", ValueType::Number,
+          Range::Between(0.01, 4.0),
+          "sized from the radius: the soft edge's width over the outer half of the light's "
+          "penumbra",
+          &vtkSmoothieShadowPass::SetPenumbraScale, &vtkSmoothieShadowPass::GetPenumbraScale),
+        Bind<vtkSmoothieShadowPass, int>("falloff", ValueType::Integer, Range::Between(0, 1),
+          "how the shadow rises across a smoothie: 0 linearly (the report's alpha'), 1 as its "
+          "square root, steepest at the umbra",
+          &vtkSmoothieShadowPass::SetFalloff, &vtkSmoothieShadowPass::GetFalloff),
+        Bind<vtkSmoothieShadowPass, double>("max_thickness", ValueType::Number,
+          Range::Between(1.0, 1024.0), "widest smoothie, in shadow-map texels",
+          &vtkSmoothieShadowPass::SetMaximumThickness, &vtkSmoothieShadowPass::GetMaximumThickness),
+        Bind<vtkSmoothieShadowPass, int>("silhouette_search", ValueType::Integer,
+          Range::Between(0, 1),
+          "how silhouette edges are found: 1 the normal-cone tree, 0 brute force (the same edges)",
+          &vtkSmoothieShadowPass::SetSilhouetteSearch, &vtkSmoothieShadowPass::GetSilhouetteSearch),
+      }),
+      [](const std::string&) { return Wrap(vtkSmartPointer<vtkSmoothieShadowPass>::New()); } },
     { "vtk",
       "VTK 9.1's vtkShadowMapPass and vtkShadowMapBakerPass, the baseline: hard shadows, "
       "opaque geometry only, light radius ignored",

@@ -1,15 +1,23 @@
 // Point lights' cube maps (vtkShadowDistanceStage): the squared distance of
-// the fragment to the face's eye, the light, from its window position.
+// the fragment to the face's eye, the light, from its window position; or
+// (vtkShadowFaceLinear) its linear depth along any frustum's axis.
 // Uses vtkShadowPackDistance() (vtkShadowCubeLookupFS.glsl).
 uniform mat4 vtkShadowFaceClipToView; // the face's inverse projection
 uniform float vtkShadowFaceSize;      // the face's width in texels
 uniform float vtkShadowFaceRange;     // 0: float map; else RGBA8, packed over this (far^2)
+uniform bool vtkShadowFaceLinear;     // the depth along the axis, not the squared distance
+uniform float vtkShadowFaceSlopeBias; // linear depth: offset in texel-to-texel changes
 
 vec4 vtkShadowFaceDistance()
 {
   vec4 view = vtkShadowFaceClipToView *
     vec4(gl_FragCoord.xy / vtkShadowFaceSize * 2.0 - 1.0, gl_FragCoord.z * 2.0 - 1.0, 1.0);
   view.xyz /= view.w;
+  if (vtkShadowFaceLinear)
+  {
+    float depth = -view.z;
+    return vec4(depth + vtkShadowFaceSlopeBias * max(abs(dFdx(depth)), abs(dFdy(depth))));
+  }
   float distance2 = dot(view.xyz, view.xyz);
   return vtkShadowFaceRange > 0.0
     ? vtkShadowPackDistance(min(distance2 / vtkShadowFaceRange, 0.9999))

@@ -19,6 +19,32 @@ float vtkShadowCubeStored(samplerCube cube, vec3 direction, float range)
     : texel.r;
 }
 
+// A cube face's axes for direction v (OpenGL's face layout): s and t
+// across the face (texel coordinates grow along them), and the distance
+// along its axis.
+void vtkShadowCubeFace(vec3 v, out vec3 s, out vec3 t, out float axis)
+{
+  vec3 a = abs(v);
+  if (a.x >= a.y && a.x >= a.z)
+  {
+    s = vec3(0.0, 0.0, -sign(v.x));
+    t = vec3(0.0, -1.0, 0.0);
+    axis = a.x;
+  }
+  else if (a.y >= a.z)
+  {
+    s = vec3(1.0, 0.0, 0.0);
+    t = vec3(0.0, 0.0, sign(v.y));
+    axis = a.y;
+  }
+  else
+  {
+    s = vec3(sign(v.z), 0.0, 0.0);
+    t = vec3(0.0, -1.0, 0.0);
+    axis = a.z;
+  }
+}
+
 // The direction to look up for a point, moved towards the light along its
 // ray by `normalBias` texels over cos(theta), as vtkShadowNormalOffset()
 // does; `size` returns a texel's world size there (texel: a texel's size

@@ -131,31 +131,6 @@ float silhouetteVisibility(sampler2DShadow map, sampler2D silhouettes, sampler2D
 #endif
 
 #if VTK_SHADOW_CUBES > 0
-// A cube face's axes for direction v (OpenGL's face layout): s and t
-// across the face, and the distance along its axis.
-void silhouetteCubeFace(vec3 v, out vec3 s, out vec3 t, out float axis)
-{
-  vec3 a = abs(v);
-  if (a.x >= a.y && a.x >= a.z)
-  {
-    s = vec3(0.0, 0.0, -sign(v.x));
-    t = vec3(0.0, -1.0, 0.0);
-    axis = a.x;
-  }
-  else if (a.y >= a.z)
-  {
-    s = vec3(1.0, 0.0, 0.0);
-    t = vec3(0.0, 0.0, sign(v.y));
-    axis = a.y;
-  }
-  else
-  {
-    s = vec3(sign(v.z), 0.0, 0.0);
-    t = vec3(0.0, -1.0, 0.0);
-    axis = a.z;
-  }
-}
-
 // One sample of a point light along direction v (light to receiver), the
 // receiver's squared distance `reference` (bias included): the cube faces'
 // depth maps are the framework's squared distances, the silhouette cube
@@ -165,7 +140,7 @@ float silhouetteCubeSample(samplerCube distances, samplerCube silhouettes, sampl
 {
   vec3 s, t;
   float axis;
-  silhouetteCubeFace(v, s, t, axis);
+  vtkShadowCubeFace(v, s, t, axis);
   vec2 st = (vec2(dot(v, s), dot(v, t)) / axis * 0.5 + 0.5) * silhouetteMapSize;
   float lit = dot(vec4(greaterThanEqual(textureGather(distances, v), vec4(reference))), vec4(1.0));
   vec2 across;

@@ -7,6 +7,7 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCubeSource.h"
+#include "vtkCylinderSource.h"
 #include "vtkFenceSource.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
@@ -157,6 +158,29 @@ inline vtkLight* Build(vtkRenderer* renderer, double lightRadius, double ballHei
   box->SetYLength(1.0);
   box->SetZLength(0.6);
   AddActor(renderer, box, blue);
+
+  const double lightPosition[3] = { 1.5, 5.0, 1.0 };
+  const double origin[3] = { 0, 0, 0 };
+  vtkLight* light = AddLight(renderer, lightPosition, origin, 40, lightRadius);
+
+  const double eye[3] = { 0, 5.5, 7.5 };
+  const double focal[3] = { 0, 0.3, 0 };
+  SetCamera(renderer, eye, focal, 35);
+  return light;
+}
+
+/// A capped cylinder of `resolution` sides standing above the ground (the
+/// report's figure 6), under a spot light; returns the light.
+inline vtkLight* BuildCylinder(vtkRenderer* renderer, double lightRadius, int resolution = 32)
+{
+  const double green[3] = { 0.3, 0.75, 0.4 };
+  AddGround(renderer);
+  vtkNew<vtkCylinderSource> cylinder;
+  cylinder->SetRadius(0.4);
+  cylinder->SetHeight(1.0);
+  cylinder->SetCenter(0.0, 1.3, 0.0);
+  cylinder->SetResolution(resolution);
+  AddActor(renderer, cylinder, green);
 
   const double lightPosition[3] = { 1.5, 5.0, 1.0 };
   const double origin[3] = { 0, 0, 0 };

@@ -386,3 +386,120 @@ def ball_visibility(scene):
     gamma = np.arccos(np.clip(cosine, -1.0, 1.0))
     covered = disc_overlap(alpha, beta, gamma) / (math.pi * alpha * alpha)
     return 1.0 - np.clip(covered, 0.0, 1.0), visible
+
+
+# Meshes a silhouette-based technique's topology can describe only in part,
+# each floating over the ground under the light: an open sheet (its border
+# edges always on the silhouette), three fins on one edge (non-manifold) and
+# a sheet with zero-area faces.
+ODD_MESHES = {
+    "sheet": "v -0.5 0 -0.5\nv 0.5 0 -0.5\nv 0.5 0 0.5\nv -0.5 0 0.5\nf 1 2 3\nf 1 3 4\n",
+    "fins": "v -0.5 0 0\nv 0.5 0 0\nv 0 0.4 0\nv 0 -0.3 0.4\nv 0 -0.3 -0.4\n"
+            "f 1 2 3\nf 2 1 4\nf 1 2 5\n",
+    "degenerate": "v -0.5 0 -0.5\nv 0.5 0 -0.5\nv 0.5 0 0.5\nv -0.5 0 0.5\nv 0 0 0\n"
+                  "f 1 2 3\nf 1 3 4\nf 1 5 3\nf 5 5 2\n",
+}
+
+
+def check_odd_meshes(technique):
+    """Each of ODD_MESHES drawn by `technique` without an error; the two
+    sheets shadow the ground beneath them and not beside them."""
+    with tempfile.TemporaryDirectory() as folder:
+        for name, text in ODD_MESHES.items():
+            path = os.path.join(folder, name + ".obj")
+            with open(path, "w") as f:
+                f.write(text)
+            scene = ball_scene(height=1.0, light_radius=0.1, technique=technique)
+            scene["actors"][1] = {"file": path, "position": [0.0, 1.0, 0.0]}
+            scene_file = os.path.join(folder, name + ".json")
+            with open(scene_file, "w") as f:
+                json.dump(scene, f)
+            output = os.path.join(folder, name + ".png")
+            result = run(["render", scene_file, "--shadow-only", "--output", output])
+            check("ERR" not in result.stderr and "rror" not in result.stderr,
+                  "%s, %s: drawn without an error%s" % (technique, name, (
+                      ": " + result.stderr[:300]) if result.stderr else ""))
+            if name in ("sheet", "degenerate"):
+                visibility = read_png(output)[:, :, 0] / 255.0
+                points, visible, _ = ground_points(scene)
+                # The sheet at y = 1 under the light at y = 5 shadows |x|, |z| < 0.625.
+                under = visible & (np.abs(points[:, :, 0]) < 0.4) & (np.abs(points[:, :, 2]) < 0.4)
+                beside = visible & (np.maximum(np.abs(points[:, :, 0]),
+                                               np.abs(points[:, :, 2])) > 1.0)
+                check(visibility[under].max() < 0.1 and visibility[beside].min() > 0.9,
+                      "%s, %s: shadowed beneath (brightest %.2f), lit beside (darkest %.2f)"
+                      % (technique, name, visibility[under].max(), visibility[beside].min()))
+
+
+def render_line_casters(pass_class, with_lines):
+    """The ball over the ground through the Python API, drawn shadow-only by
+    a `pass_class` pass (200 x 150), with (`with_lines`) a polyline and a
+    polyvertex beside the ball among the casters: casters without faces,
+    which scene files refuse. Returns (the red channel, bottom row first;
+    the pass's errors and warnings; the pass)."""
+    from vtkmodules.vtkCommonCore import vtkCommand, vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+    from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
+    from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkPolyDataMapper,
+                                             vtkRenderWindow, vtkRenderer, vtkWindowToImageFilter)
+    import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (OpenGL factory)
+
+    def add(renderer, data):
+        mapper = vtkPolyDataMapper()
+        if hasattr(data, "GetOutputPort"):
+            mapper.SetInputConnection(data.GetOutputPort())
+        else:
+            mapper.SetInputData(data)
+        a = vtkActor()
+        a.SetMapper(mapper)
+        renderer.AddActor(a)
+
+    renderer = vtkRenderer()
+    plane = vtkPlaneSource()
+    plane.SetOrigin(-3, 0, -3)
+    plane.SetPoint1(3, 0, -3)
+    plane.SetPoint2(-3, 0, 3)
+    add(renderer, plane)
+    ball = vtkSphereSource()
+    ball.SetCenter(0, 1, 0)
+    ball.SetRadius(0.5)
+    add(renderer, ball)
+    if with_lines:
+        for kind in ("lines", "points"):
+            points = vtkPoints()
+            cells = vtkCellArray()
+            for i in range(5):
+                points.InsertNextPoint(1.5, 0.5 + 0.2 * i, -1.0 + 0.5 * i)
+            cells.InsertNextCell(5, list(range(5)))
+            data = vtkPolyData()
+            data.SetPoints(points)
+            data.SetLines(cells) if kind == "lines" else data.SetVerts(cells)
+            add(renderer, data)
+    light = vtkLight()
+    light.SetLightTypeToSceneLight()
+    light.SetPositional(True)
+    light.SetPosition(0, 5, 0)
+    light.SetFocalPoint(0, 0, 0)
+    light.SetConeAngle(45)
+    pass_class.SetRadius(0.3, light)
+    renderer.AddLight(light)
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(0, 6, 6)
+    camera.SetFocalPoint(0, 0, 0)
+    renderer.ResetCameraClippingRange()
+    shadows = pass_class()
+    shadows.SetShadowOnlyLight(0)
+    renderer.SetPass(shadows)
+    errors = []
+    shadows.AddObserver(vtkCommand.ErrorEvent, lambda *args: errors.append(args))
+    shadows.AddObserver(vtkCommand.WarningEvent, lambda *args: errors.append(args))
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(True)
+    window.SetSize(200, 150)
+    window.AddRenderer(renderer)
+    window.Render()
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.Update()
+    image = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())[:, 0].reshape(150, 200)
+    return image, errors, shadows

@@ -5,10 +5,8 @@ occluder's height and stay hard at contact, close to the ray-cast truth (on
 other scenes: test_quality.py); and meshes the topology aware mesh cannot
 fully describe (open sheets, non-manifold edges, degenerate faces, lines and
 points) drawn without an error."""
-import copy
 import json
 import os
-import tempfile
 
 import numpy as np
 
@@ -81,121 +79,18 @@ print("post: edge %.1f px at the base, %.1f px far out" % (at_base, far_out))
 st.check(at_base <= 2.0, "at contact the edge is hard: %.1f px wide" % at_base)
 st.check(far_out > at_base + 2.0, "away from contact it softens: %.1f px" % far_out)
 
-# Meshes a topology aware mesh describes only in part, each floating over
-# the ground under the light: an open sheet (its border edges always on the
-# silhouette), three fins on one edge (non-manifold) and a sheet with
-# zero-area faces. No error; the sheets shadow the ground beneath them.
-MESHES = {
-    "sheet": "v -0.5 0 -0.5\nv 0.5 0 -0.5\nv 0.5 0 0.5\nv -0.5 0 0.5\nf 1 2 3\nf 1 3 4\n",
-    "fins": "v -0.5 0 0\nv 0.5 0 0\nv 0 0.4 0\nv 0 -0.3 0.4\nv 0 -0.3 -0.4\n"
-            "f 1 2 3\nf 2 1 4\nf 1 2 5\n",
-    "degenerate": "v -0.5 0 -0.5\nv 0.5 0 -0.5\nv 0.5 0 0.5\nv -0.5 0 0.5\nv 0 0 0\n"
-                  "f 1 2 3\nf 1 3 4\nf 1 5 3\nf 5 5 2\n",
-}
-with tempfile.TemporaryDirectory() as folder:
-    for name, text in MESHES.items():
-        path = os.path.join(folder, name + ".obj")
-        with open(path, "w") as f:
-            f.write(text)
-        scene = st.ball_scene(height=1.0, light_radius=0.1, technique="silhouette")
-        scene["actors"][1] = {"file": path, "position": [0.0, 1.0, 0.0]}
-        scene_file = os.path.join(folder, name + ".json")
-        with open(scene_file, "w") as f:
-            json.dump(scene, f)
-        output = os.path.join(folder, name + ".png")
-        result = st.run(["render", scene_file, "--shadow-only", "--output", output])
-        st.check("ERR" not in result.stderr and "rror" not in result.stderr,
-                 "%s: drawn without an error%s" % (name, (": " + result.stderr[:300])
-                                                   if result.stderr else ""))
-        if name in ("sheet", "degenerate"):
-            pixels = st.read_png(output)
-            visibility = pixels[:, :, 0] / 255.0
-            points, visible, _ = st.ground_points(scene)
-            # The sheet at y = 1 under the light at y = 5 shadows |x|, |z| < 0.625.
-            under = visible & (np.abs(points[:, :, 0]) < 0.4) & (np.abs(points[:, :, 2]) < 0.4)
-            beside = visible & (np.maximum(np.abs(points[:, :, 0]), np.abs(points[:, :, 2])) > 1.0)
-            st.check(visibility[under].max() < 0.1 and visibility[beside].min() > 0.9,
-                     "%s: shadowed beneath (brightest %.2f), lit beside (darkest %.2f)"
-                     % (name, visibility[under].max(), visibility[beside].min()))
+# Meshes a topology aware mesh describes only in part (an open sheet, fins
+# on a non-manifold edge, zero-area faces): no error, the sheets' shadows
+# beneath them.
+st.check_odd_meshes("silhouette")
 
 # Casters without faces (scene files refuse them; the API does not): lines
 # and points beside the ball cast their depth-map shadow only, with no error,
 # and the ball's shadow is unchanged.
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkCommonCore import vtkCommand, vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
-from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkPolyDataMapper, vtkRenderWindow,
-                                         vtkRenderer, vtkWindowToImageFilter)
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (OpenGL factory)
-from vtksoftshadows import vtkSilhouetteShadowPass
+from vtksoftshadows import vtkSilhouetteShadowPass  # noqa: E402
 
-
-def add(renderer, data):
-    mapper = vtkPolyDataMapper()
-    if hasattr(data, "GetOutputPort"):
-        mapper.SetInputConnection(data.GetOutputPort())
-    else:
-        mapper.SetInputData(data)
-    a = vtkActor()
-    a.SetMapper(mapper)
-    renderer.AddActor(a)
-
-
-def render(with_lines):
-    renderer = vtkRenderer()
-    plane = vtkPlaneSource()
-    plane.SetOrigin(-3, 0, -3)
-    plane.SetPoint1(3, 0, -3)
-    plane.SetPoint2(-3, 0, 3)
-    add(renderer, plane)
-    ball = vtkSphereSource()
-    ball.SetCenter(0, 1, 0)
-    ball.SetRadius(0.5)
-    add(renderer, ball)
-    if with_lines:
-        for kind in ("lines", "points"):
-            points = vtkPoints()
-            cells = vtkCellArray()
-            for i in range(5):
-                points.InsertNextPoint(1.5, 0.5 + 0.2 * i, -1.0 + 0.5 * i)
-            cells.InsertNextCell(5, list(range(5)))
-            data = vtkPolyData()
-            data.SetPoints(points)
-            data.SetLines(cells) if kind == "lines" else data.SetVerts(cells)
-            add(renderer, data)
-    light = vtkLight()
-    light.SetLightTypeToSceneLight()
-    light.SetPositional(True)
-    light.SetPosition(0, 5, 0)
-    light.SetFocalPoint(0, 0, 0)
-    light.SetConeAngle(45)
-    vtkSilhouetteShadowPass.SetRadius(0.3, light)
-    renderer.AddLight(light)
-    camera = renderer.GetActiveCamera()
-    camera.SetPosition(0, 6, 6)
-    camera.SetFocalPoint(0, 0, 0)
-    renderer.ResetCameraClippingRange()
-    shadows = vtkSilhouetteShadowPass()
-    shadows.SetShadowOnlyLight(0)
-    renderer.SetPass(shadows)
-    errors = []
-    shadows.AddObserver(vtkCommand.ErrorEvent, lambda *args: errors.append(args))
-    shadows.AddObserver(vtkCommand.WarningEvent, lambda *args: errors.append(args))
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(True)
-    window.SetSize(200, 150)
-    window.AddRenderer(renderer)
-    window.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.Update()
-    image = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())[:, 0].reshape(150, 200)
-    return image, errors, shadows
-
-
-plain, _, _ = render(False)
-image, errors, shadows = render(True)
+plain, _, _ = st.render_line_casters(vtkSilhouetteShadowPass, False)
+image, errors, shadows = st.render_line_casters(vtkSilhouetteShadowPass, True)
 st.check(not errors, "lines and points among the casters: no error or warning (%d)" % len(errors))
 st.check(shadows.GetTopologyAwareMeshBytes() > 0,
          "the ball's topology aware mesh is on the GPU: %d bytes" % shadows.GetTopologyAwareMeshBytes())

@@ -1,0 +1,160 @@
+/**
+ * @class   vtkSmoothieShadowPass
+ * @brief   Smoothies (Chan & Durand, "Rendering fake soft shadows with
+ *          smoothies", EGSR 2003, as Volokh's report implements them): soft
+ *          shadow edges from geometry drawn along the casters' silhouettes.
+ *
+ * Technique `smoothies`. Per caster polydata, built once through the caster
+ * registry's cache: its coincident points merged, the edge-to-faces map and
+ * face normals (vtkEdgeAdjacencyFilter) and the silhouette search
+ * (vtkLightSilhouetteFilter, with its normal-cone tree by default). Per light,
+ * whenever the light moves in a caster's model space, the caster's silhouette
+ * edges with the light in that space, chained into lines with adjacency (each
+ * edge with the one that follows it). Then per light:
+ *
+ *  1. the shadow map: each fragment's linear depth written into a 32-bit
+ *     float map with MIN blending (section 3.2); a point light's is the
+ *     framework's cube of squared distances;
+ *  2. the smoothie buffer (sections 3.1, 3.3 to 3.5): a geometry shader
+ *     extrudes each silhouette edge in the light's screen space into a
+ *     smoothie edge (two triangles, the side chosen by the adjacent faces'
+ *     normals averaged in screen space, figure 2a) and adds the smoothie
+ *     corner where it meets the next edge (figure 2b); their fragments
+ *     write their depth and alpha' = alpha / (1 - b/r) (clamped; none where
+ *     b ~ r) into a float buffer with MIN blending; a point light's six cube
+ *     faces each get their own smoothie face;
+ *  3. receivers (section 4): 0 if d > d_s, alpha' if d > d_m, else 1, at the
+ *     four nearest texels, weighted bilinearly.
+ *
+ * The thickness t is the outer half of the penumbra the light's radius gives
+ * (PenumbraScale times it) unless Thickness fixes it: alpha' is then the
+ * fragment's distance from the silhouette over the penumbra's outer width at
+ * its receiver, which for spot and point lights is exactly the report's
+ * alpha / (1 - b/r) with t = that width for a receiver infinitely far, and
+ * for directional lights its parallel counterpart (the width grows with
+ * r - b). Smoothies are fake: the umbra stays the hard shadow's, and the
+ * soft edge lies outside it.
+ *
+ * Spot, directional and point lights. Casters without polygons (lines,
+ * points) cast their shadow-map shadow only. Silhouette edges crossing a
+ * cube face's eye plane draw no smoothie on that face.
+ *
+ * @sa vtkLightSilhouetteFilter vtkEdgeAdjacencyFilter vtkSoftShadowPass
+ */
+
+#ifndef vtkSmoothieShadowPass_h
+#define vtkSmoothieShadowPass_h
+
+#include "vtkSoftShadowPass.h"
+
+#include <memory> // for std::unique_ptr
+
+class VTKSOFTSHADOWSRENDERING_EXPORT vtkSmoothieShadowPass : public vtkSoftShadowPass
+{
+public:
+  static vtkSmoothieShadowPass* New();
+  vtkTypeMacro(vtkSmoothieShadowPass, vtkSoftShadowPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * A fixed smoothie thickness t in shadow-map texels, with the report's
+   * alpha / (1 - b/r) correction; 0 (default) sizes it from the light's
+   * radius (see above).
+   */
+  vtkSetClampMacro(Thickness, double, 0.0, 256.0);
+  vtkGetMacro(Thickness, double);
+  ///@}
+
+  ///@{
+  /**
+   * Sized from the radius: the soft edge's width as a fraction of the outer
+   * half of the light's penumbra. Default 0.7, nearest to the ray-cast truth
+   * with the SquareRoot falloff on the quality scenes (docs/quality.md).
+   */
+  vtkSetClampMacro(PenumbraScale, double, 0.01, 4.0);
+  vtkGetMacro(PenumbraScale, double);
+  ///@}
+
+  enum Falloffs
+  {
+    Linear = 0,    ///< alpha' as the report has it
+    SquareRoot = 1 ///< its square root
+  };
+
+  ///@{
+  /**
+   * How the shadow rises across the smoothie: Linear, the report's alpha',
+   * or SquareRoot (default), steepest at the umbra like the outer half of a
+   * disc light's penumbra; against the ray-cast truth it is 10-25% nearer
+   * (docs/quality.md).
+   */
+  vtkSetClampMacro(Falloff, int, Linear, SquareRoot);
+  vtkGetMacro(Falloff, int);
+  void SetFalloffToLinear() { this->SetFalloff(Linear); }
+  void SetFalloffToSquareRoot() { this->SetFalloff(SquareRoot); }
+  ///@}
+
+  ///@{
+  /**
+   * The widest smoothie, in shadow-map texels: thicker ones (blockers very
+   * near a large light) are clamped to it. Default 64.
+   */
+  vtkSetClampMacro(MaximumThickness, double, 1.0, 1024.0);
+  vtkGetMacro(MaximumThickness, double);
+  ///@}
+
+  ///@{
+  /**
+   * The silhouette search (vtkLightSilhouetteFilter::Methods): the
+   * normal-cone tree (default) or brute force. Both find the same edges.
+   */
+  vtkSetClampMacro(SilhouetteSearch, int, 0, 1);
+  vtkGetMacro(SilhouetteSearch, int);
+  ///@}
+
+  ///@{
+  /**
+   * Results of the last frame, over every caster and light: silhouette
+   * edges, and the CPU time (ms) of the silhouette searches and of building
+   * the smoothies' edge lists (0 for casters whose light did not move).
+   */
+  vtkGetMacro(NumberOfSilhouetteEdges, vtkIdType);
+  vtkGetMacro(SilhouetteTime, double);
+  ///@}
+
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+protected:
+  vtkSmoothieShadowPass();
+  ~vtkSmoothieShadowPass() override;
+
+  bool RenderShadowMaps(const vtkRenderState* s) override;
+  bool SupportsPointLights() const override { return true; }
+  std::string GetVisibilityDeclarations() override;
+  std::vector<std::string> GetReceiverExtensions() const override
+  {
+    // Four texels of two channels in three fetches: textureGather with a component.
+    return { "GL_ARB_texture_gather", "GL_ARB_gpu_shader5" };
+  }
+  std::string GetVisibilityExpression(int slot) override;
+  void SetVisibilityUniforms(vtkShaderProgram* program) override;
+  std::vector<ReceiverTexture> GetReceiverTextures() override;
+
+  double Thickness = 0.0;
+  double PenumbraScale = 0.7;
+  int Falloff = SquareRoot;
+  double MaximumThickness = 64.0;
+  int SilhouetteSearch = 1;
+  vtkIdType NumberOfSilhouetteEdges = 0;
+  double SilhouetteTime = 0.0;
+
+private:
+  vtkSmoothieShadowPass(const vtkSmoothieShadowPass&) = delete;
+  void operator=(const vtkSmoothieShadowPass&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+};
+
+#endif
