@@ -60,6 +60,7 @@ set(softshadows_rendering_shaders
   vtkSmoothieEdgesGS
   vtkSmoothieEdgesVS
   vtkSmoothieLookupFS
+  vtkSmoothieQuadsVS
   vtkSoftShadowReceiverFS)
 
 # Sets <sources_var> and <headers_var> to the generated C strings of the

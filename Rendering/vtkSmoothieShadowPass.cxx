@@ -30,6 +30,7 @@
 #include "vtkSmoothieEdgesGS.h"
 #include "vtkSmoothieEdgesVS.h"
 #include "vtkSmoothieLookupFS.h"
+#include "vtkSmoothieQuadsVS.h"
 
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/trigonometric.hpp>
@@ -53,8 +54,25 @@ struct SlotEdges
   std::array<double, 4> Light{ { 0.0, 0.0, 0.0, -1.0 } }; ///< in model space; w < 0: none yet
   int Search = -1;
   vtkIdType Edges = 0;
-  std::shared_ptr<vtkShadowGeometry> Geometry;
+  std::shared_ptr<vtkShadowGeometry> Geometry; ///< the edges, for the geometry shader
+  vtkSmartPointer<vtkPolyData> Chained;        ///< Geometry's input
+  // Built on the CPU: per frustum (a point light's six faces), the smoothie
+  // triangles and the model-to-clip matrix they were built for.
+  std::array<std::shared_ptr<vtkShadowGeometry>, 6> Quads;
+  std::array<glm::dmat4, 6> QuadsFor;
+  std::array<vtkPolyData*, 6> QuadsFrom{}; ///< the Chained they came from
 };
+
+std::shared_ptr<vtkShadowGeometry> NewGeometry()
+{
+  // Released with the entry (a new polydata, or the caster gone).
+  return std::shared_ptr<vtkShadowGeometry>(new vtkShadowGeometry,
+    [](vtkShadowGeometry* geometry)
+    {
+      geometry->ReleaseGraphicsResources(nullptr);
+      delete geometry;
+    });
+}
 
 // What the pass keeps of each caster's polydata.
 struct CasterEdges
@@ -168,6 +186,195 @@ vtkSmartPointer<vtkPolyData> ChainEdges(vtkPolyData* silhouette, vtkDataArray* f
   return chained;
 }
 
+// What the thickness depends on (vtkSmoothieEdgesGS.glsl's uniforms).
+struct Sizing
+{
+  glm::dvec3 Eye{ 0.0 }, Axis{ 0.0, 0.0, -1.0 };
+  glm::dvec4 Values{ 0.0 }; ///< fixed, K, parallel, widest
+  double Far = 1.0;
+};
+
+// vtkSmoothieEdgesGS.glsl's construction on the CPU, for one frustum: the
+// same smoothie edges and corners, as triangles whose vertices carry their
+// silhouette vertex (model space) and their screen offset
+// (vtkSmoothieQuadsVS.glsl).
+class QuadBuilder
+{
+public:
+  QuadBuilder(const glm::dmat4& modelToClip, const glm::dmat4& modelToWorld, const Sizing& sizing)
+    : ModelToClip(modelToClip)
+    , ModelToWorld(modelToWorld)
+    , Size(sizing)
+  {
+  }
+
+  vtkSmartPointer<vtkPolyData> Build(vtkPolyData* chained)
+  {
+    vtkPoints* points = chained->GetPoints();
+    vtkDataArray* normals = chained->GetPointData()->GetArray("smoothieNormalMC");
+    const vtkIdType edges = chained->GetNumberOfLines();
+    for (vtkIdType e = 0; e < edges; ++e)
+    {
+      double p[3][3], n[3][4];
+      for (int k = 0; k < 3; ++k)
+      {
+        points->GetPoint(4 * e + k, p[k]);
+        normals->GetTuple(4 * e + k, n[k]);
+      }
+      this->Edge(glm::dvec3(p[0][0], p[0][1], p[0][2]), glm::dvec3(p[1][0], p[1][1], p[1][2]),
+        glm::dvec3(p[2][0], p[2][1], p[2][2]), glm::dvec3(n[0][0], n[0][1], n[0][2]),
+        glm::dvec3(n[2][0], n[2][1], n[2][2]), n[2][3] > 0.5);
+    }
+    const vtkIdType count = static_cast<vtkIdType>(this->Widths.size());
+    auto array = [count](const char* name, int components, const std::vector<float>& values)
+    {
+      vtkNew<vtkFloatArray> a;
+      a->SetName(name);
+      a->SetNumberOfComponents(components);
+      a->SetNumberOfTuples(count);
+      std::copy(values.begin(), values.end(), a->GetPointer(0));
+      return vtkSmartPointer<vtkFloatArray>(a);
+    };
+    vtkNew<vtkPoints> corners;
+    corners->SetData(array("", 3, this->Positions));
+    vtkNew<vtkIdTypeArray> offsets;
+    offsets->SetNumberOfValues(count / 3 + 1);
+    for (vtkIdType t = 0; t <= count / 3; ++t)
+    {
+      offsets->SetValue(t, 3 * t);
+    }
+    vtkNew<vtkIdTypeArray> connectivity;
+    connectivity->SetNumberOfValues(count);
+    for (vtkIdType v = 0; v < count; ++v)
+    {
+      connectivity->SetValue(v, v);
+    }
+    vtkNew<vtkCellArray> triangles;
+    triangles->SetData(offsets, connectivity);
+    auto quads = vtkSmartPointer<vtkPolyData>::New();
+    quads->SetPoints(corners);
+    quads->SetPolys(triangles);
+    quads->GetPointData()->AddArray(array("smoothieOffsetIn", 2, this->Offsets));
+    quads->GetPointData()->AddArray(array("smoothieShapeIn", 4, this->Shapes));
+    quads->GetPointData()->AddArray(array("smoothieWidthIn", 1, this->Widths));
+    return quads;
+  }
+
+private:
+  glm::dvec4 Clip(const glm::dvec3& p) const { return this->ModelToClip * glm::dvec4(p, 1.0); }
+  static glm::dvec2 Screen(const glm::dvec4& c) { return glm::dvec2(c) / c.w; }
+
+  double ThicknessAt(const glm::dvec3& p) const
+  {
+    if (this->Size.Values.x > 0.0)
+    {
+      return this->Size.Values.x;
+    }
+    const glm::dvec3 world(this->ModelToWorld * glm::dvec4(p, 1.0));
+    const double b = std::max(glm::dot(world - this->Size.Eye, this->Size.Axis), 1.0e-6);
+    const double t = this->Size.Values.z > 0.0
+      ? this->Size.Values.y * std::max(this->Size.Far - b, 0.0)
+      : this->Size.Values.y / b;
+    return std::min(t, this->Size.Values.w);
+  }
+
+  glm::dvec2 Extrusion(const glm::dvec3& p, const glm::dvec3& q, const glm::dvec3& n,
+    const glm::dvec4& cp, const glm::dvec4& cq) const
+  {
+    const glm::dvec2 e = Screen(cq) - Screen(cp);
+    glm::dvec2 d = glm::normalize(glm::dvec2(e.y, -e.x));
+    const glm::dvec4 m = this->Clip(0.5 * (p + q));
+    const glm::dvec4 dn = this->ModelToClip * glm::dvec4(n, 0.0);
+    const glm::dvec2 ns = glm::dvec2(dn) * m.w - glm::dvec2(m) * dn.w;
+    const double agree = glm::dot(d, ns);
+    const double length = glm::length(ns);
+    if (length > 0.0 && std::abs(agree) > 1.0e-3 * length)
+    {
+      d *= agree > 0.0 ? 1.0 : -1.0;
+    }
+    return d;
+  }
+
+  void Vertex(const glm::dvec3& p, const glm::dvec2& offset, const glm::dvec4& shape, double width)
+  {
+    this->Positions.insert(this->Positions.end(),
+      { static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z) });
+    this->Offsets.insert(
+      this->Offsets.end(), { static_cast<float>(offset.x), static_cast<float>(offset.y) });
+    this->Shapes.insert(this->Shapes.end(),
+      { static_cast<float>(shape.x), static_cast<float>(shape.y), static_cast<float>(shape.z),
+        static_cast<float>(shape.w) });
+    this->Widths.push_back(static_cast<float>(width));
+  }
+
+  // Two triangles: a, b, a + u, and b, a + u, b + v (a strip's order).
+  void Quad(const glm::dvec3& a, const glm::dvec2& u0, const glm::dvec2& u1, const glm::dvec3& b,
+    const glm::dvec2& v0, const glm::dvec2& v1, const glm::dvec4& shape, double ta, double tb)
+  {
+    this->Vertex(a, u0, shape, ta);
+    this->Vertex(b, v0, shape, tb);
+    this->Vertex(a, u1, shape, ta);
+    this->Vertex(b, v0, shape, tb);
+    this->Vertex(a, u1, shape, ta);
+    this->Vertex(b, v1, shape, tb);
+  }
+
+  void Corner(
+    const glm::dvec3& b, const glm::dvec4& cb, const glm::dvec2& u, const glm::dvec2& v, double t)
+  {
+    const glm::dvec2 miter = (u + v) / std::max(1.0 + glm::dot(u, v), 1.0e-3);
+    const glm::dvec4 shape(Screen(cb), 0.0, 1.0);
+    this->Quad(b, glm::dvec2(0.0), t * u, b, t * v, t * miter, shape, t, t);
+  }
+
+  void Edge(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, const glm::dvec3& nab,
+    const glm::dvec3& nbc, bool corner)
+  {
+    const glm::dvec4 ca = this->Clip(a), cb = this->Clip(b), cc = this->Clip(c);
+    if (ca.w <= 1.0e-6 || cb.w <= 1.0e-6)
+    {
+      return;
+    }
+    const glm::dvec2 sa = Screen(ca), sb = Screen(cb);
+    if (glm::distance(sa, sb) < 1.0e-7)
+    {
+      return;
+    }
+    const double ta = this->ThicknessAt(a), tb = this->ThicknessAt(b);
+    const glm::dvec2 d1 = this->Extrusion(a, b, nab, ca, cb);
+    const glm::dvec4 line(d1, glm::dot(d1, sa), 0.0);
+    this->Quad(a, glm::dvec2(0.0), ta * d1, b, glm::dvec2(0.0), tb * d1, line, ta, tb);
+    if (!corner || cc.w <= 1.0e-6)
+    {
+      return;
+    }
+    const glm::dvec2 sc = Screen(cc);
+    if (glm::distance(sb, sc) < 1.0e-7)
+    {
+      return;
+    }
+    const glm::dvec2 d2 = this->Extrusion(b, c, nbc, cb, cc);
+    const glm::dvec2 e1 = glm::normalize(sb - sa), e2 = glm::normalize(sc - sb);
+    if (glm::dot(e2, d1) >= 0.0 && glm::dot(-e1, d2) >= 0.0)
+    {
+      return;
+    }
+    if (glm::dot(d1, d2) >= -0.5)
+    {
+      this->Corner(b, cb, d1, d2, tb);
+      return;
+    }
+    const glm::dvec2 bisector = d1 + d2;
+    const glm::dvec2 m = glm::dot(bisector, bisector) > 1.0e-6 ? glm::normalize(bisector) : e1;
+    this->Corner(b, cb, d1, m, tb);
+    this->Corner(b, cb, m, d2, tb);
+  }
+
+  glm::dmat4 ModelToClip, ModelToWorld;
+  Sizing Size;
+  std::vector<float> Positions, Offsets, Shapes, Widths;
+};
+
 // A pass shader with `prefix` put after its version line.
 std::string WithPrefix(const std::string& source, const std::string& prefix)
 {
@@ -233,12 +440,7 @@ bool vtkSmoothieShadowPass::RenderShadowMaps(const vtkRenderState* s)
       SlotEdges& entry = edges.Slots[slot];
       if (!entry.Geometry)
       {
-        entry.Geometry = std::shared_ptr<vtkShadowGeometry>(new vtkShadowGeometry,
-          [](vtkShadowGeometry* geometry)
-          {
-            geometry->ReleaseGraphicsResources(nullptr);
-            delete geometry;
-          });
+        entry.Geometry = NewGeometry();
         entry.Geometry->SetPrimitive(vtkShadowGeometry::Primitive::LinesAdjacency);
       }
       if (entry.Light != key || entry.Search != this->SilhouetteSearch)
@@ -247,7 +449,8 @@ bool vtkSmoothieShadowPass::RenderShadowMaps(const vtkRenderState* s)
         edges.Filter->SetPositional(key[3] > 0.0);
         edges.Filter->SetMethod(this->SilhouetteSearch);
         edges.Filter->Update();
-        entry.Geometry->SetInput(ChainEdges(edges.Filter->GetOutput(), edges.FaceNormals));
+        entry.Chained = ChainEdges(edges.Filter->GetOutput(), edges.FaceNormals);
+        entry.Geometry->SetInput(entry.Chained);
         entry.Edges = edges.Filter->GetOutput()->GetNumberOfLines();
         entry.Light = key;
         entry.Search = this->SilhouetteSearch;
@@ -258,7 +461,7 @@ bool vtkSmoothieShadowPass::RenderShadowMaps(const vtkRenderState* s)
     casters.emplace_back(&caster, &edges);
   }
   this->Internal->Casters.Prune(*this->Casters);
-  this->SilhouetteTime =
+  double cpu =
     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
   for (size_t slot = 0; slot < lights.size(); ++slot)
@@ -347,24 +550,51 @@ bool vtkSmoothieShadowPass::RenderShadowMaps(const vtkRenderState* s)
     setup.Blend = vtkShadowDrawSetup::Blending::Min;
     setup.DepthTest = false;
     setup.Draw = vtkShadowDrawSetup::Props::None;
-    for (const auto& caster : casters)
+    // Each frustum (a point light's six faces in turn): its uniforms, and
+    // on the CPU its smoothie triangles, built again when the caster's
+    // edges or its model-to-clip matrix changed.
+    const Sizing sizing{ frustum.Eye, frustum.Direction,
+      glm::dvec4(thickness[0], thickness[1], thickness[2], thickness[3]), frustum.Far };
+    auto draw = [&](const vtkShadowFrustum& view, int face)
     {
-      SlotEdges& entry = caster.second->Slots[slot];
-      entry.Geometry->SetShaders(vtkSmoothieEdgesVS,
-        light.Point ? this->Internal->CubeFaceFragmentShader : this->Internal->FragmentShader,
-        vtkSmoothieEdgesGS);
-      setup.Geometry.push_back(entry.Geometry.get());
-    }
-    // Each frustum's own uniforms: a point light's six faces in turn.
-    auto draw = [&](const vtkShadowFrustum& view)
-    {
-      const glm::mat4 clipToWorld(glm::inverse(view.Projection * view.View));
+      const glm::dmat4 worldToClip = view.Projection * view.View;
+      const glm::mat4 clipToWorld(glm::inverse(worldToClip));
       const glm::vec3 eye(view.Eye);
       const glm::vec3 axis(view.Direction);
       const float far = static_cast<float>(view.Far);
       const int unitIndex = receivers->GetTextureUnit();
-      for (vtkShadowGeometry* geometry : setup.Geometry)
+      const std::string& fragment =
+        light.Point ? this->Internal->CubeFaceFragmentShader : this->Internal->FragmentShader;
+      setup.Geometry.clear();
+      for (const auto& caster : casters)
       {
+        SlotEdges& entry = caster.second->Slots[slot];
+        vtkShadowGeometry* geometry = entry.Geometry.get();
+        if (this->BuildOnGPU)
+        {
+          geometry->SetShaders(vtkSmoothieEdgesVS, fragment, vtkSmoothieEdgesGS);
+        }
+        else
+        {
+          auto& quads = entry.Quads[face];
+          const glm::dmat4 modelToClip = worldToClip * caster.first->ModelToWorld;
+          if (!quads || entry.QuadsFor[face] != modelToClip ||
+            entry.QuadsFrom[face] != entry.Chained)
+          {
+            const auto built = std::chrono::steady_clock::now();
+            quads = quads ? quads : NewGeometry();
+            QuadBuilder builder(modelToClip, caster.first->ModelToWorld, sizing);
+            quads->SetInput(builder.Build(entry.Chained));
+            entry.QuadsFor[face] = modelToClip;
+            entry.QuadsFrom[face] = entry.Chained;
+            cpu +=
+              std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - built)
+                .count();
+          }
+          quads->SetModelToWorld(caster.first->ModelToWorld);
+          quads->SetShaders(vtkSmoothieQuadsVS, fragment);
+          geometry = quads.get();
+        }
         geometry->SetUniforms(
           [=](vtkShaderProgram* program)
           {
@@ -378,6 +608,7 @@ bool vtkSmoothieShadowPass::RenderShadowMaps(const vtkRenderState* s)
             program->SetUniformi("smoothieReceivers", unitIndex);
             program->SetUniformi("smoothieFalloff", falloff);
           });
+        setup.Geometry.push_back(geometry);
       }
       return this->Draw(s, setup);
     };
@@ -388,13 +619,13 @@ bool vtkSmoothieShadowPass::RenderShadowMaps(const vtkRenderState* s)
       setup.Faces = &light.Faces;
       for (setup.CubeFace = 0; setup.CubeFace < 6 && drawn; ++setup.CubeFace)
       {
-        drawn = draw(light.Faces[setup.CubeFace]);
+        drawn = draw(light.Faces[setup.CubeFace], setup.CubeFace);
       }
     }
     else
     {
       setup.View = &light.Map;
-      drawn = draw(light.Map);
+      drawn = draw(light.Map, 0);
     }
     receivers->Deactivate();
     if (!drawn)
@@ -404,6 +635,7 @@ bool vtkSmoothieShadowPass::RenderShadowMaps(const vtkRenderState* s)
       return false;
     }
   }
+  this->SilhouetteTime = cpu;
   return true;
 }
 
@@ -476,6 +708,7 @@ void vtkSmoothieShadowPass::PrintSelf(ostream& os, vtkIndent indent)
      << (this->SilhouetteSearch == vtkLightSilhouetteFilter::BRUTE_FORCE ? "BruteForce"
                                                                          : "NormalConeTree")
      << "\n";
+  os << indent << "BuildOnGPU: " << this->BuildOnGPU << "\n";
   os << indent << "NumberOfSilhouetteEdges: " << this->NumberOfSilhouetteEdges << "\n";
   os << indent << "SilhouetteTime: " << this->SilhouetteTime << "\n";
 }

@@ -115,9 +115,23 @@ public:
 
   ///@{
   /**
+   * Where the smoothie edges and corners are built: on the GPU (default), a
+   * geometry shader extruding the silhouette edges as they are drawn, so
+   * that one edge list serves every frustum; or on the CPU, as the report
+   * does, triangles per frustum (six for a point light) built again whenever
+   * the light or the caster moves (docs/benchmarks.md compares them).
+   */
+  vtkSetMacro(BuildOnGPU, bool);
+  vtkGetMacro(BuildOnGPU, bool);
+  vtkBooleanMacro(BuildOnGPU, bool);
+  ///@}
+
+  ///@{
+  /**
    * Results of the last frame, over every caster and light: silhouette
    * edges, and the CPU time (ms) of the silhouette searches and of building
-   * the smoothies' edge lists (0 for casters whose light did not move).
+   * the smoothies' edge lists and, on the CPU, their triangles (near 0 when
+   * nothing moved).
    */
   vtkGetMacro(NumberOfSilhouetteEdges, vtkIdType);
   vtkGetMacro(SilhouetteTime, double);
@@ -146,6 +160,7 @@ protected:
   int Falloff = SquareRoot;
   double MaximumThickness = 64.0;
   int SilhouetteSearch = 1;
+  bool BuildOnGPU = true;
   vtkIdType NumberOfSilhouetteEdges = 0;
   double SilhouetteTime = 0.0;
 

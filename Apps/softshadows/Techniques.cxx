@@ -415,8 +415,19 @@ const std::vector<Technique>& Techniques()
           Range::Between(0, 1),
           "how silhouette edges are found: 1 the normal-cone tree, 0 brute force (the same edges)",
           &vtkSmoothieShadowPass::SetSilhouetteSearch, &vtkSmoothieShadowPass::GetSilhouetteSearch),
+        Bind<vtkSmoothieShadowPass, bool>("build_on_gpu", ValueType::Boolean, Range::Any(),
+          "build smoothie edges and corners in a geometry shader (true) or, per frustum, on the "
+          "CPU",
+          &vtkSmoothieShadowPass::SetBuildOnGPU, &vtkSmoothieShadowPass::GetBuildOnGPU),
       }),
-      [](const std::string&) { return Wrap(vtkSmartPointer<vtkSmoothieShadowPass>::New()); } },
+      [](const std::string&)
+      {
+        auto pass = vtkSmartPointer<vtkSmoothieShadowPass>::New();
+        TechniqueInstance instance = Wrap(pass);
+        vtkSmoothieShadowPass* smoothies = pass;
+        instance.CpuTime = [smoothies]() { return smoothies->GetSilhouetteTime(); };
+        return instance;
+      } },
     { "vtk",
       "VTK 9.1's vtkShadowMapPass and vtkShadowMapBakerPass, the baseline: hard shadows, "
       "opaque geometry only, light radius ignored",

@@ -44,6 +44,9 @@ struct TechniqueInstance
   vtkSmartPointer<vtkRenderPass> Pass;
   vtkSoftShadowPass* Shadows = nullptr;   ///< this module's pass; null for `vtk`
   vtkShadowMapBakerPass* Baker = nullptr; ///< VTK's baker; only for `vtk`
+  /// The technique's own CPU time in the last frame (ms), for techniques
+  /// that report one (smoothies: silhouette search and edge lists).
+  std::function<double()> CpuTime;
 };
 
 /// A technique parameter: how the scene spells it and how it reaches the pass.

