@@ -4,8 +4,8 @@ it, for spot, point and directional lights; penumbrae that widen as the
 occluder rises; nearer the ray-cast truth than `hard` on the ball, the fence
 and a knot (the quality scenes: test_quality.py); thinner smoothies better
 for a fence, as the report finds; no worse snapping than the reference on a
-12-sided cylinder under a moving light; both silhouette searches giving the
-same image; and meshes the silhouette filter describes only in part, and
+12-sided cylinder under a moving light; both silhouette searches, and
+smoothies built on the GPU or on the CPU, giving the same image; and meshes the silhouette filter describes only in part, and
 casters without faces, drawn without an error."""
 import copy
 import json
@@ -151,6 +151,18 @@ tree, _ = st.shadow_only(scene)
 scene["shadows"]["smoothies"] = {"silhouette_search": 0}
 brute, _ = st.shadow_only(scene)
 st.check(np.array_equal(tree, brute), "brute force and the normal-cone tree: the same image")
+
+# Built on the CPU per frustum (the report's way), the same smoothies as the
+# geometry shader's, under a spot and a point light.
+for light_type in ("spot", "point"):
+    scene = st.ball_scene(height=1.0, light_radius=0.4, technique="smoothies",
+                          light_type=light_type)
+    gpu, _ = st.shadow_only(scene)
+    scene["shadows"]["smoothies"] = {"build_on_gpu": False}
+    cpu, _ = st.shadow_only(scene)
+    differ = float((np.abs(gpu - cpu) > 2.0 / 255.0).mean())
+    st.check(differ < 0.001, "%s: smoothies built on the CPU as on the GPU (%.3f%% of pixels "
+             "differ)" % (light_type, 100 * differ))
 
 # 7. Meshes the silhouette filter describes only in part, and casters
 # without faces.
