@@ -1,5 +1,8 @@
 #include "vtkShadowCasterRegistry.h"
 
+#include "vtkCleanPolyData.h"
+#include "vtkNew.h"
+
 #include "vtkActor.h"
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
@@ -159,4 +162,21 @@ void vtkShadowCasterRegistry::AddActor(vtkProp* prop, vtkActor* actor, vtkMatrix
     this->AddBlocks(
       input, true, flatIndex, compositeMapper->GetCompositeDataDisplayAttributes(), caster);
   }
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> vtkShadowCasterRegistry::MergedFaces(vtkPolyData* data)
+{
+  vtkNew<vtkCleanPolyData> clean;
+  clean->SetInputData(data);
+  clean->SetTolerance(1.0e-6); // of the bounding box's diagonal
+  clean->ConvertLinesToPointsOff();
+  clean->ConvertPolysToLinesOff();
+  clean->ConvertStripsToPolysOff();
+  clean->Update();
+  auto faces = vtkSmartPointer<vtkPolyData>::New();
+  faces->SetPoints(clean->GetOutput()->GetPoints());
+  faces->SetPolys(clean->GetOutput()->GetPolys());
+  faces->SetStrips(clean->GetOutput()->GetStrips());
+  return faces;
 }

@@ -22,6 +22,7 @@
 #ifndef vtkShadowCasterRegistry_h
 #define vtkShadowCasterRegistry_h
 
+#include "vtkSmartPointer.h"               // for vtkSmartPointer
 #include "vtkSoftShadowsRenderingModule.h" // for export macro
 #include "vtkType.h"                       // for vtkMTimeType
 #include "vtkWeakPointer.h"                // for vtkWeakPointer
@@ -69,6 +70,16 @@ public:
   const std::vector<vtkProp*>& GetProps() const { return this->Props; }
   /// The polydata of the visible actors drawn by polydata mappers.
   const std::vector<vtkShadowCaster>& GetCasters() const { return this->Casters; }
+
+  /**
+   * A caster's faces (polygons and strips, not lines or points) with its
+   * coincident points merged (vtkCleanPolyData, 1e-6 of the bounds'
+   * diagonal): what silhouette-based techniques build their topology from.
+   * Faces meet where they share a point id, and flat-shaded meshes or seams
+   * a rounding apart would otherwise make every edge there a border, always
+   * a silhouette.
+   */
+  static vtkSmartPointer<vtkPolyData> MergedFaces(vtkPolyData* data);
 
 private:
   void AddActors(vtkProp* prop);

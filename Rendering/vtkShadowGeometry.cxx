@@ -48,6 +48,15 @@ void vtkShadowGeometry::SetShaders(
 }
 
 //------------------------------------------------------------------------------
+std::string vtkShadowGeometry::WithPrefix(const std::string& source, const std::string& prefix)
+{
+  const std::string tag = "//VTK::System::Dec";
+  std::string text = source;
+  text.insert(text.find(tag) + tag.size(), "\n" + prefix);
+  return text;
+}
+
+//------------------------------------------------------------------------------
 void vtkShadowGeometry::Upload(vtkShaderProgram* program)
 {
   const bool current = this->Input && this->UploadTime >= this->Input->GetMTime() && this->VAO;

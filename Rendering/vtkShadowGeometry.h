@@ -57,6 +57,9 @@ public:
   void SetPrimitive(Primitive primitive);
   void SetShaders(const std::string& vertex, const std::string& fragment,
     const std::string& geometry = std::string());
+  /// `source` (a shader beginning with //VTK::System::Dec) with `prefix`
+  /// (defines, shared declarations) put after that line.
+  static std::string WithPrefix(const std::string& source, const std::string& prefix);
   void SetModelToWorld(const glm::dmat4& modelToWorld) { this->ModelToWorld = modelToWorld; }
 
   /// The technique's own uniforms, set before every draw.

@@ -1,7 +1,6 @@
 #include "vtkSilhouetteShadowPass.h"
 
 #include "vtkCellArray.h"
-#include "vtkCleanPolyData.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -51,21 +50,7 @@ struct CasterMesh
 // set per light, for 2D maps or cube faces).
 void BuildMesh(vtkPolyData* data, bool drop, CasterMesh& mesh)
 {
-  // Faces meet where they share a point id: merge coincident points first
-  // (meshes drawn with flat normals, seams of parametric surfaces a rounding
-  // apart), or every edge there would be a border, always a silhouette.
-  vtkNew<vtkCleanPolyData> clean;
-  clean->SetInputData(data);
-  clean->SetTolerance(1.0e-6); // of the bounding box's diagonal
-  clean->ConvertLinesToPointsOff();
-  clean->ConvertPolysToLinesOff();
-  clean->ConvertStripsToPolysOff();
-  clean->Update();
-  // Faces only: lines and points have no silhouette to give.
-  auto faces = vtkSmartPointer<vtkPolyData>::New();
-  faces->SetPoints(clean->GetOutput()->GetPoints());
-  faces->SetPolys(clean->GetOutput()->GetPolys());
-  faces->SetStrips(clean->GetOutput()->GetStrips());
+  vtkSmartPointer<vtkPolyData> faces = vtkShadowCasterRegistry::MergedFaces(data);
   mesh.Filter = vtkSmartPointer<vtkTopologyAwareMeshFilter>::New();
   mesh.Filter->SetInputData(faces);
   mesh.Filter->SetDropNonSilhouetteFaces(drop);
@@ -86,15 +71,6 @@ void BuildMesh(vtkPolyData* data, bool drop, CasterMesh& mesh)
     });
   mesh.Geometry->SetInput(buffer);
   mesh.Dropped = drop;
-}
-
-// A pass-2 shader `source` with `prefix` put after its version line.
-std::string PassShader(const std::string& source, const std::string& prefix)
-{
-  const std::string tag = "//VTK::System::Dec";
-  std::string text = source;
-  text.insert(text.find(tag) + tag.size(), "\n" + prefix);
-  return text;
 }
 
 // The fraction of a disc of unit radius on the lit side of a straight edge
@@ -120,12 +96,13 @@ struct vtkSilhouetteShadowPass::Internals
   std::vector<Band> Bands;
   vtkShadowCasterCache<CasterMesh> Meshes;
   // Pass 2's shaders, for 2D maps and for cube faces (no 2D depth map to read).
-  std::string VertexShader = PassShader(vtkSilhouetteEdgesVS, vtkSilhouetteCommon);
+  std::string VertexShader =
+    vtkShadowGeometry::WithPrefix(vtkSilhouetteEdgesVS, vtkSilhouetteCommon);
   std::string FragmentShader = vtkSilhouetteEdgesFS;
-  std::string CubeFaceVertexShader = PassShader(
+  std::string CubeFaceVertexShader = vtkShadowGeometry::WithPrefix(
     vtkSilhouetteEdgesVS, std::string("#define SILHOUETTE_CUBE_FACE\n") + vtkSilhouetteCommon);
   std::string CubeFaceFragmentShader =
-    PassShader(vtkSilhouetteEdgesFS, "#define SILHOUETTE_CUBE_FACE");
+    vtkShadowGeometry::WithPrefix(vtkSilhouetteEdgesFS, "#define SILHOUETTE_CUBE_FACE");
   bool SamplersReported = false;
   bool PackedReported = false;
 };

@@ -2,7 +2,6 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
-#include "vtkCleanPolyData.h"
 #include "vtkDataArray.h"
 #include "vtkEdgeAdjacencyFilter.h"
 #include "vtkFloatArray.h"
@@ -84,21 +83,7 @@ struct CasterEdges
 
 void BuildEdges(vtkPolyData* data, CasterEdges& edges)
 {
-  // Faces meet where they share a point id: merge coincident points first
-  // (flat-shaded meshes, seams a rounding apart), or every edge there would
-  // be a border, always a silhouette.
-  vtkNew<vtkCleanPolyData> clean;
-  clean->SetInputData(data);
-  clean->SetTolerance(1.0e-6); // of the bounding box's diagonal
-  clean->ConvertLinesToPointsOff();
-  clean->ConvertPolysToLinesOff();
-  clean->ConvertStripsToPolysOff();
-  clean->Update();
-  // Faces only: lines and points have no silhouette.
-  auto faces = vtkSmartPointer<vtkPolyData>::New();
-  faces->SetPoints(clean->GetOutput()->GetPoints());
-  faces->SetPolys(clean->GetOutput()->GetPolys());
-  faces->SetStrips(clean->GetOutput()->GetStrips());
+  vtkSmartPointer<vtkPolyData> faces = vtkShadowCasterRegistry::MergedFaces(data);
   // The face normals of each edge (the silhouette filter's EdgeIds index them).
   vtkNew<vtkEdgeAdjacencyFilter> adjacency;
   adjacency->SetInputData(faces);
@@ -375,14 +360,6 @@ private:
   std::vector<float> Positions, Offsets, Shapes, Widths;
 };
 
-// A pass shader with `prefix` put after its version line.
-std::string WithPrefix(const std::string& source, const std::string& prefix)
-{
-  const std::string tag = "//VTK::System::Dec";
-  std::string text = source;
-  text.insert(text.find(tag) + tag.size(), "\n" + prefix);
-  return text;
-}
 }
 
 struct vtkSmoothieShadowPass::Internals
@@ -390,7 +367,8 @@ struct vtkSmoothieShadowPass::Internals
   vtkShadowCasterCache<CasterEdges> Casters;
   vtkShadowDistanceStage LinearDepth; ///< pass 1 of 2D maps
   std::string FragmentShader = vtkSmoothieEdgesFS;
-  std::string CubeFaceFragmentShader = WithPrefix(vtkSmoothieEdgesFS, "#define SMOOTHIE_CUBE_FACE");
+  std::string CubeFaceFragmentShader =
+    vtkShadowGeometry::WithPrefix(vtkSmoothieEdgesFS, "#define SMOOTHIE_CUBE_FACE");
   bool PackedReported = false;
 };
 
