@@ -1,6 +1,7 @@
 # The Rendering module's sources, shared by the standalone build
 # (CMakeLists.txt here) and the remote-module build (cmake/RemoteModule.cmake).
 set(softshadows_rendering_classes
+  vtkAliasFreeShadowPass
   vtkContactHardeningShadowPass
   vtkHardShadowPass
   vtkOmnidirectionalShadowPass
@@ -34,6 +35,12 @@ set(softshadows_rendering_private_headers
 
 # Shaders live in glsl/ and are embedded as C strings at build time.
 set(softshadows_rendering_shaders
+  vtkAliasFreeCastersFS
+  vtkAliasFreeCastersGS
+  vtkAliasFreeCastersVS
+  vtkAliasFreeListsCS
+  vtkAliasFreeLookup
+  vtkAliasFreeLookupBuildCS
   vtkContactCommonFS
   vtkContactDistanceFS
   vtkContactGaussianFS

@@ -124,6 +124,27 @@ void vtkShadowCompute::Program::SetUniform2i(const char* name, int x, int y)
   glUniform2i(glGetUniformLocation(this->Handle, name), x, y);
 }
 
+void vtkShadowCompute::Program::SetUniform3i(const char* name, const int value[3])
+{
+  glUniform3iv(glGetUniformLocation(this->Handle, name), 1, value);
+}
+void vtkShadowCompute::Program::SetUniform3f(const char* name, const float value[3])
+{
+  glUniform3fv(glGetUniformLocation(this->Handle, name), 1, value);
+}
+void vtkShadowCompute::Program::SetUniform4f(const char* name, const float value[4])
+{
+  glUniform4fv(glGetUniformLocation(this->Handle, name), 1, value);
+}
+void vtkShadowCompute::Program::SetUniformMatrix3f(const char* name, const float value[9])
+{
+  glUniformMatrix3fv(glGetUniformLocation(this->Handle, name), 1, GL_FALSE, value);
+}
+void vtkShadowCompute::Program::SetUniformMatrix4f(const char* name, const float value[16])
+{
+  glUniformMatrix4fv(glGetUniformLocation(this->Handle, name), 1, GL_FALSE, value);
+}
+
 //------------------------------------------------------------------------------
 void vtkShadowCompute::Program::Release()
 {

@@ -56,6 +56,12 @@ public:
     void SetUniformi(const char* name, int value);
     void SetUniformf(const char* name, float value);
     void SetUniform2i(const char* name, int x, int y);
+    void SetUniform3i(const char* name, const int value[3]);
+    void SetUniform3f(const char* name, const float value[3]);
+    void SetUniform4f(const char* name, const float value[4]);
+    /// Column-major, as glm stores them.
+    void SetUniformMatrix3f(const char* name, const float value[9]);
+    void SetUniformMatrix4f(const char* name, const float value[16]);
     ///@}
 
     /// Delete the program; the context must be current.

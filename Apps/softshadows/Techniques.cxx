@@ -1,5 +1,6 @@
 #include "Techniques.h"
 
+#include "vtkAliasFreeShadowPass.h"
 #include "vtkContactHardeningShadowPass.h"
 #include "vtkHardShadowPass.h"
 #include "vtkOmnidirectionalShadowPass.h"
@@ -427,6 +428,52 @@ const std::vector<Technique>& Techniques()
         vtkSmoothieShadowPass* smoothies = pass;
         instance.CpuTime = [smoothies]() { return smoothies->GetSilhouetteTime(); };
         return instance;
+      } },
+    { "aliasfree",
+      "vtkAliasFreeShadowPass: alias-free shadow maps (Sintorn, Eisemann & Assarsson): shadows "
+      "tested for exactly the points the camera sees, in OpenGL 4.3 compute; soft shadows as the "
+      "fraction of light samples each triangle hides",
+      { { "soft", "sample-based visibility of the light's sphere (or disc, rectangle, cone)" },
+        { "hard", "alias-free hard shadows from the light's centre" } },
+      WithCommonParameters({
+        Bind<vtkAliasFreeShadowPass, int>("light_samples", ValueType::Integer,
+          Range::Between(32, 1024), "soft: light samples per view sample (rounded up to 32s)",
+          &vtkAliasFreeShadowPass::SetNumberOfLightSamples,
+          &vtkAliasFreeShadowPass::GetNumberOfLightSamples),
+        Bind<vtkAliasFreeShadowPass, int>("light_shape", ValueType::Integer, Range::Between(0, 2),
+          "soft, spot lights: 0 a sphere of the radius, 1 a disc, 2 a square of side 2 radius, "
+          "facing along the light's axis",
+          &vtkAliasFreeShadowPass::SetLightShape, &vtkAliasFreeShadowPass::GetLightShape),
+        { "light_scale", ValueType::Vector3, Range::Any(),
+          "soft, spot lights: the shape's scale across the axis (x, y) and along it (z): an "
+          "ellipsoid, an ellipse, a rectangle",
+          [](TechniqueInstance& t, const Json& v)
+          {
+            Get<vtkAliasFreeShadowPass>(t)->SetLightScale(
+              v[0].get<double>(), v[1].get<double>(), v[2].get<double>());
+          },
+          [](TechniqueInstance& t)
+          {
+            const double* s = Get<vtkAliasFreeShadowPass>(t)->GetLightScale();
+            return Json::array({ s[0], s[1], s[2] });
+          } },
+        Bind<vtkAliasFreeShadowPass, bool>("fit_to_view_samples", ValueType::Boolean, Range::Any(),
+          "fit each light's map to the view samples it sees",
+          &vtkAliasFreeShadowPass::SetFitToViewSamples,
+          &vtkAliasFreeShadowPass::GetFitToViewSamples),
+        Bind<vtkAliasFreeShadowPass, double>("memory_limit", ValueType::Number,
+          Range::Between(1.0, 65536.0),
+          "MiB the lists, masks and tables may take; a frame needing more is drawn unshadowed",
+          &vtkAliasFreeShadowPass::SetMemoryLimit, &vtkAliasFreeShadowPass::GetMemoryLimit),
+      }),
+      [](const std::string& variant)
+      {
+        auto pass = vtkSmartPointer<vtkAliasFreeShadowPass>::New();
+        if (variant == "hard")
+        {
+          pass->SetVariantToHard();
+        }
+        return Wrap(pass);
       } },
     { "vtk",
       "VTK 9.1's vtkShadowMapPass and vtkShadowMapBakerPass, the baseline: hard shadows, "

@@ -1,0 +1,138 @@
+// Tests a caster triangle against the view samples listed in this texel
+// (Sintorn et al., section 3.3; empty lists end at once):
+// - hard: a sample is hidden when it lies inside the planes through the
+//   triangle's edges and the light and behind the triangle's plane; its bit
+//   is set by an atomic OR;
+// - soft (ALIASFREE_SOFT, section 4.2): the light samples the triangle hides
+//   from a view sample p are those inside the planes through p and each edge
+//   and behind the triangle; each plane's bitmask comes from the lookup
+//   table (vtkAliasFreeLookup.glsl), the four are ANDed and ORed into p's
+//   mask.
+// Closed casters hide a sample only from their outer side, with no offset at
+// all (hard); open ones from both, except samples within aliasfreeEpsilon of
+// their plane: their own surface.
+// Uses: vtkAliasFreeCastersGS.glsl (its outputs), vtkAliasFreeLookup.glsl
+// (soft, prepended by the pass).
+
+layout(std430, binding = 0) readonly buffer aliasfreeCountsBuffer { uint aliasfreeCounts[]; };
+layout(std430, binding = 1) readonly buffer aliasfreeOffsetsBuffer { uint aliasfreeOffsets[]; };
+layout(std430, binding = 4) readonly buffer aliasfreeSamplesBuffer { vec4 aliasfreeSamples[]; };
+layout(std430, binding = 5) coherent buffer aliasfreeHiddenBuffer { uint aliasfreeHidden[]; };
+
+uniform int aliasfreeMapTexels; // texels a side
+uniform int aliasfreeClosed;
+uniform float aliasfreeOrientation;
+uniform float aliasfreeEpsilon;
+uniform vec4 aliasfreeLight; // world position (w = 1), or direction towards it (w = 0)
+
+#ifdef ALIASFREE_SOFT
+layout(std430, binding = 6) readonly buffer aliasfreeLookupBuffer { uint aliasfreeLookup[]; };
+// World normals to the light's frame, scaled by the light's size and shape
+// (spot lights: radius times the shape's scale; directional lights: the
+// tangent of the angular radius across the axis, nothing along it).
+uniform mat3 aliasfreeToLight;
+flat in vec3 aliasfreeA;
+flat in vec3 aliasfreeB;
+flat in vec3 aliasfreeC;
+
+// The light samples x with dot(m, x - q) > 0: x = c + T s for a spot light
+// of centre c, x - q = l + T s for directional lights (l towards the light,
+// T s across it), T the light's frame and size (aliasfreeToLight
+// transposed), s a sample of the table.
+aliasfreePlaneMask aliasfreeSide(vec3 m, vec3 q)
+{
+  vec3 n = aliasfreeToLight * m;
+  float length = max(sqrt(dot(n, n)), 1.0e-30);
+  vec3 centre = aliasfreeLight.w > 0.5 ? aliasfreeLight.xyz - q : aliasfreeLight.xyz;
+  return aliasfreeFindCell(n / length, -dot(m, centre) / length);
+}
+
+uint aliasfreeWord(aliasfreePlaneMask m, int word)
+{
+  return (m.cell < 0 ? m.fill : aliasfreeLookup[m.cell * aliasfreeWords + word]) ^ m.flip;
+}
+#else
+flat in vec4 aliasfreePlane;
+flat in vec4 aliasfreeEdge0;
+flat in vec4 aliasfreeEdge1;
+flat in vec4 aliasfreeEdge2;
+#endif
+
+// aliasfreeEpsilon is relative to a sample's distance from a spot light;
+// for directional lights it is in world units.
+float aliasfreeScale(vec3 p)
+{
+  return aliasfreeLight.w > 0.5 ? distance(p, aliasfreeLight.xyz) : 1.0;
+}
+
+float aliasfreeTolerance(vec3 p)
+{
+  return aliasfreeClosed == 1 ? 0.0 : aliasfreeEpsilon * aliasfreeScale(p);
+}
+
+void main()
+{
+  ivec2 texel = ivec2(gl_FragCoord.xy);
+  uint index = uint(texel.y * aliasfreeMapTexels + texel.x);
+  uint count = aliasfreeCounts[index];
+  if (count == 0u)
+  {
+    return;
+  }
+  uint first = aliasfreeOffsets[index];
+#ifdef ALIASFREE_SOFT
+  vec3 normal = normalize(cross(aliasfreeB - aliasfreeA, aliasfreeC - aliasfreeA));
+  vec3 corners[3] = vec3[3](aliasfreeA, aliasfreeB, aliasfreeC);
+  for (uint s = first; s < first + count; ++s)
+  {
+    vec3 p = aliasfreeSamples[s].xyz;
+    // p's side of the triangle: light samples on the other side may be hidden.
+    float side = dot(normal, p - aliasfreeA);
+    // A triangle in p's own plane (p's face, coplanar neighbours) hides
+    // nothing from it: its cone is flat. Closed casters hide from outside.
+    if (abs(side) <= aliasfreeEpsilon * aliasfreeScale(p) ||
+      (aliasfreeClosed == 1 && aliasfreeOrientation * side <= 0.0))
+    {
+      continue;
+    }
+    aliasfreePlaneMask planes[4];
+    planes[3] = aliasfreeSide(side > 0.0 ? -normal : normal, aliasfreeA);
+    if (planes[3].cell < 0 && (planes[3].fill ^ planes[3].flip) == 0u)
+    {
+      continue; // the whole light on p's side
+    }
+    bool cone = true;
+    for (int i = 0; i < 3 && cone; ++i)
+    {
+      vec3 q = corners[i], r = corners[(i + 1) % 3], o = corners[(i + 2) % 3];
+      vec3 m = cross(q - p, r - p);
+      cone = dot(m, m) > 0.0;
+      planes[i] = aliasfreeSide(dot(m, o - p) >= 0.0 ? m : -m, p);
+    }
+    if (!cone)
+    {
+      continue; // p on an edge's line
+    }
+    uint base = s * uint(aliasfreeWords);
+    for (int w = 0; w < aliasfreeWords; ++w)
+    {
+      uint hidden = aliasfreeWord(planes[0], w) & aliasfreeWord(planes[1], w) &
+        aliasfreeWord(planes[2], w) & aliasfreeWord(planes[3], w);
+      if (hidden != 0u)
+      {
+        atomicOr(aliasfreeHidden[base + uint(w)], hidden);
+      }
+    }
+  }
+#else
+  for (uint s = first; s < first + count; ++s)
+  {
+    vec4 p = vec4(aliasfreeSamples[s].xyz, 1.0);
+    if (dot(aliasfreeEdge0, p) >= 0.0 && dot(aliasfreeEdge1, p) >= 0.0 &&
+      dot(aliasfreeEdge2, p) >= 0.0 && dot(aliasfreePlane, p) < -aliasfreeTolerance(p.xyz))
+    {
+      atomicOr(aliasfreeHidden[s >> 5], 1u << (s & 31u));
+    }
+  }
+#endif
+}

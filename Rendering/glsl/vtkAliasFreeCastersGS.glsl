@@ -1,0 +1,310 @@
+// Conservative rasterization of a caster triangle into the alias-free map
+// (Sintorn et al., section 3.2, after Hasselgren et al.): every texel the
+// triangle touches runs the fragment shader, which tests the texel's view
+// samples. The covered region is the triangle's projection, or with
+// ALIASFREE_SOFT its influence region (4.1), grown by the texel square
+// (their Minkowski sum: each vertex of the region becomes the square's
+// corners between its two edges' outward normals), so that a texel is drawn
+// exactly when the region touches it; then a triangle fan as a strip.
+// Uses: vtkAliasFreeCastersVS.glsl (its output), vtkAliasFreeCastersFS.glsl.
+
+layout(triangles) in;
+#ifdef ALIASFREE_SOFT
+layout(triangle_strip, max_vertices = 22) out;
+#else
+layout(triangle_strip, max_vertices = 9) out;
+#endif
+
+in vec3 aliasfreeWorldIn[];
+
+uniform mat4 aliasfreeWorldToClip; // the fitted map
+uniform vec4 aliasfreeLight;       // world position (w = 1), or direction towards it (w = 0)
+uniform float aliasfreeMapSize;
+uniform int aliasfreeClosed;       // 1: the caster is closed, with outward normals...
+uniform float aliasfreeOrientation; // ... along +cross(b - a, c - a) (1) or against it (-1)
+#ifdef ALIASFREE_SOFT
+uniform float aliasfreeReach;  // the light's bounding sphere (world), or tan(angular radius)
+uniform vec3 aliasfreeEye;      // the map's eye and axis
+uniform vec3 aliasfreeAxis;
+uniform vec3 aliasfreeSide0;    // two unit vectors across the axis
+uniform vec3 aliasfreeSide1;
+uniform float aliasfreeFar;     // depth of the farthest view sample
+#endif
+
+#ifdef ALIASFREE_SOFT
+flat out vec3 aliasfreeA; // the triangle, world
+flat out vec3 aliasfreeB;
+flat out vec3 aliasfreeC;
+#else
+flat out vec4 aliasfreePlane; // the triangle's plane, positive towards the light
+flat out vec4 aliasfreeEdge0; // the planes through its edges and the light, positive inside
+flat out vec4 aliasfreeEdge1;
+flat out vec4 aliasfreeEdge2;
+#endif
+
+const float aliasfreePiOver6 = 0.52359877559830;
+const int aliasfreeMaxPoints = 18;
+vec2 aliasfreeRegion[aliasfreeMaxPoints];
+int aliasfreeRegionSize = 0;
+
+void aliasfreeEmitVertex(vec2 ndc)
+{
+#ifdef ALIASFREE_SOFT
+  aliasfreeA = aliasfreeWorldIn[0];
+  aliasfreeB = aliasfreeWorldIn[1];
+  aliasfreeC = aliasfreeWorldIn[2];
+#endif
+  gl_Position = vec4(ndc, 0.0, 1.0);
+  EmitVertex();
+}
+
+// The whole map: for triangles whose region cannot be bounded (behind the
+// light's eye plane, a light inside its reach).
+void aliasfreeEmitAll()
+{
+  aliasfreeEmitVertex(vec2(-1.0, -1.0));
+  aliasfreeEmitVertex(vec2(1.0, -1.0));
+  aliasfreeEmitVertex(vec2(-1.0, 1.0));
+  aliasfreeEmitVertex(vec2(1.0, 1.0));
+  EndPrimitive();
+}
+
+// The texel square's corner k (counter-clockwise from (+, +)) and the corner
+// farthest along direction n.
+vec2 aliasfreeCorner(int k, float h)
+{
+  return h * vec2(k == 0 || k == 3 ? 1.0 : -1.0, k < 2 ? 1.0 : -1.0);
+}
+int aliasfreeSupport(vec2 n)
+{
+  return n.y >= 0.0 ? (n.x >= 0.0 ? 0 : 1) : (n.x >= 0.0 ? 3 : 2);
+}
+
+float aliasfreeCross(vec2 a, vec2 b)
+{
+  return a.x * b.y - a.y * b.x;
+}
+
+// The region (a convex polygon, counter-clockwise) grown by the texel
+// square, emitted as a strip: p0, p1, p(n-1), p2, p(n-2), ...
+void aliasfreeEmitGrown()
+{
+  int n = aliasfreeRegionSize;
+  // Half a texel, a little more so that rounding never loses a texel.
+  float h = 1.001 / aliasfreeMapSize;
+  vec2 grown[aliasfreeMaxPoints + 4];
+  int count = 0;
+  for (int i = 0; i < n; ++i)
+  {
+    vec2 p = aliasfreeRegion[i];
+    vec2 before = p - aliasfreeRegion[(i + n - 1) % n];
+    vec2 after = aliasfreeRegion[(i + 1) % n] - p;
+    int k = aliasfreeSupport(vec2(before.y, -before.x));
+    int last = aliasfreeSupport(vec2(after.y, -after.x));
+    for (int step = 0; step < 4 && count < aliasfreeMaxPoints + 4; ++step)
+    {
+      grown[count++] = p + aliasfreeCorner(k, h);
+      if (k == last)
+      {
+        break;
+      }
+      k = (k + 1) % 4;
+    }
+  }
+  int left = 1, right = count - 1;
+  aliasfreeEmitVertex(grown[0]);
+  for (bool fromLeft = true; left <= right; fromLeft = !fromLeft)
+  {
+    aliasfreeEmitVertex(fromLeft ? grown[left++] : grown[right--]);
+  }
+  EndPrimitive();
+}
+
+// The convex hull (counter-clockwise) of `points` into aliasfreeRegion, by
+// gift wrapping: a handful of points.
+void aliasfreeHull(vec2 points[aliasfreeMaxPoints], int count)
+{
+  int start = 0;
+  for (int i = 1; i < count; ++i)
+  {
+    if (points[i].x < points[start].x ||
+      (points[i].x == points[start].x && points[i].y < points[start].y))
+    {
+      start = i;
+    }
+  }
+  int current = start;
+  aliasfreeRegionSize = 0;
+  do
+  {
+    aliasfreeRegion[aliasfreeRegionSize++] = points[current];
+    int next = (current + 1) % count;
+    for (int i = 0; i < count; ++i)
+    {
+      float turn = aliasfreeCross(points[next] - points[current], points[i] - points[current]);
+      // Clockwise of the candidate, or as far on its line: the hull turns there.
+      if (turn < 0.0 ||
+        (turn == 0.0 &&
+          distance(points[i], points[current]) > distance(points[next], points[current])))
+      {
+        next = i;
+      }
+    }
+    current = next;
+  } while (current != start && aliasfreeRegionSize < aliasfreeMaxPoints);
+}
+
+vec3 aliasfreeTowardsLight(vec3 p)
+{
+  return aliasfreeLight.w > 0.5 ? aliasfreeLight.xyz - p : aliasfreeLight.xyz;
+}
+
+void main()
+{
+  vec3 a = aliasfreeWorldIn[0], b = aliasfreeWorldIn[1], c = aliasfreeWorldIn[2];
+  vec3 normal = cross(b - a, c - a);
+  if (dot(normal, normal) <= 0.0)
+  {
+    return; // no area: hides nothing
+  }
+  normal = normalize(normal);
+  float facing = dot(normal, aliasfreeTowardsLight(a));
+#ifdef ALIASFREE_SOFT
+  // Closed casters: a triangle hides light samples behind its inner side
+  // only; none when the whole light lies on its outer side.
+  if (aliasfreeClosed == 1)
+  {
+    vec3 outward = aliasfreeOrientation * normal;
+    float reach = aliasfreeLight.w > 0.5
+      ? dot(outward, aliasfreeLight.xyz - a) - aliasfreeReach
+      : dot(outward, normalize(aliasfreeLight.xyz)) - aliasfreeReach / sqrt(1.0 + aliasfreeReach * aliasfreeReach);
+    if (reach > 0.0)
+    {
+      return;
+    }
+  }
+  // Section 4.1: from each vertex v, the light's silhouette bounded by a
+  // hexagon and projected through v onto the far plane (the farthest view
+  // sample's depth, or farther for vertices beyond it).
+  float far = aliasfreeFar;
+  for (int i = 0; i < 3; ++i)
+  {
+    far = max(far, dot(aliasfreeWorldIn[i] - aliasfreeEye, aliasfreeAxis) * 1.001);
+  }
+  vec2 points[aliasfreeMaxPoints];
+  int count = 0;
+  for (int i = 0; i < 3; ++i)
+  {
+    vec3 v = aliasfreeWorldIn[i];
+    float depth = dot(v - aliasfreeEye, aliasfreeAxis);
+    vec3 centre, side0, side1;
+    float reach;
+    vec3 hexagon[6];
+    if (aliasfreeLight.w > 0.5)
+    {
+      // The sphere seen from v: a circle of radius R sqrt(1 - R^2 / D^2),
+      // R^2 / D nearer v than the sphere's centre, across v -> centre.
+      vec3 toLight = aliasfreeLight.xyz - v;
+      float D = length(toLight);
+      if (D <= aliasfreeReach * 1.001)
+      {
+        aliasfreeEmitAll();
+        return;
+      }
+      vec3 u = toLight / D;
+      centre = aliasfreeLight.xyz - u * (aliasfreeReach * aliasfreeReach / D);
+      reach = aliasfreeReach * sqrt(max(1.0 - aliasfreeReach * aliasfreeReach / (D * D), 0.0)) /
+        cos(aliasfreePiOver6);
+      side0 = normalize(abs(u.x) < 0.9 ? cross(u, vec3(1.0, 0.0, 0.0)) : cross(u, vec3(0.0, 1.0, 0.0)));
+      side1 = cross(u, side0);
+      for (int k = 0; k < 6; ++k)
+      {
+        float angle = float(k) * 2.0 * aliasfreePiOver6;
+        vec3 h = centre + reach * (cos(angle) * side0 + sin(angle) * side1);
+        float hd = dot(h - aliasfreeEye, aliasfreeAxis);
+        if (depth <= hd + 1.0e-6 * abs(depth))
+        {
+          aliasfreeEmitAll(); // v beside or before the light: no bound
+          return;
+        }
+        vec3 x = h + (v - h) * ((far - hd) / (depth - hd));
+        vec4 clip = aliasfreeWorldToClip * vec4(x, 1.0);
+        if (clip.w <= 0.0)
+        {
+          aliasfreeEmitAll();
+          return;
+        }
+        points[count++] = clip.xy / clip.w;
+      }
+    }
+    else
+    {
+      // Directional: v moved to the far plane along the cone's directions,
+      // a circle of radius (far - depth) tan(angular radius) across the axis.
+      reach = max(far - depth, 0.0) * aliasfreeReach / cos(aliasfreePiOver6);
+      centre = v + max(far - depth, 0.0) * aliasfreeAxis;
+      for (int k = 0; k < 6; ++k)
+      {
+        float angle = float(k) * 2.0 * aliasfreePiOver6;
+        vec3 x = centre + reach * (cos(angle) * aliasfreeSide0 + sin(angle) * aliasfreeSide1);
+        vec4 clip = aliasfreeWorldToClip * vec4(x, 1.0);
+        points[count++] = clip.xy / clip.w;
+      }
+    }
+  }
+  aliasfreeHull(points, count);
+  if (aliasfreeRegionSize < 3)
+  {
+    return;
+  }
+  aliasfreeEmitGrown();
+#else
+  // Closed casters: light-back-facing triangles alone (section 3.3).
+  if (aliasfreeClosed == 1 && aliasfreeOrientation * facing > 0.0)
+  {
+    return;
+  }
+  vec3 towards = facing >= 0.0 ? normal : -normal;
+  aliasfreePlane = vec4(towards, -dot(towards, a));
+  vec3 corners[3] = vec3[3](a, b, c);
+  vec4 edges[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    vec3 p = corners[i], q = corners[(i + 1) % 3], r = corners[(i + 2) % 3];
+    vec3 m = aliasfreeLight.w > 0.5 ? cross(p - aliasfreeLight.xyz, q - aliasfreeLight.xyz)
+                                    : cross(q - p, aliasfreeLight.xyz);
+    float length2 = dot(m, m);
+    if (length2 <= 0.0)
+    {
+      return; // seen edge-on from the light
+    }
+    m *= inversesqrt(length2);
+    m *= dot(m, r - p) >= 0.0 ? 1.0 : -1.0;
+    edges[i] = vec4(m, -dot(m, p));
+  }
+  aliasfreeEdge0 = edges[0];
+  aliasfreeEdge1 = edges[1];
+  aliasfreeEdge2 = edges[2];
+  vec4 clips[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    clips[i] = aliasfreeWorldToClip * vec4(corners[i], 1.0);
+    if (clips[i].w <= 0.0)
+    {
+      aliasfreeEmitAll(); // crosses the light's eye plane
+      return;
+    }
+  }
+  vec2 p0 = clips[0].xy / clips[0].w, p1 = clips[1].xy / clips[1].w, p2 = clips[2].xy / clips[2].w;
+  float area = aliasfreeCross(p1 - p0, p2 - p0);
+  if (area == 0.0)
+  {
+    return; // edge-on from the light: hides nothing
+  }
+  aliasfreeRegion[0] = p0;
+  aliasfreeRegion[1] = area > 0.0 ? p1 : p2;
+  aliasfreeRegion[2] = area > 0.0 ? p2 : p1;
+  aliasfreeRegionSize = 3;
+  aliasfreeEmitGrown();
+#endif
+}

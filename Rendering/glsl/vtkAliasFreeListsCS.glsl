@@ -1,0 +1,275 @@
+// The view samples' lists in the light's map (Sintorn et al., section 3.1),
+// one stage per define:
+// - ALIASFREE_BOUNDS: the bounds of the samples in the light's clip space
+//   and their greatest depth (to fit the map and the far plane, 4.3);
+// - ALIASFREE_COUNT: each sample's texel, and its index in the texel's list
+//   by atomic increment of the texel's count;
+// - ALIASFREE_SCAN_BLOCKS, ALIASFREE_SCAN_TOP, ALIASFREE_SCAN_ADD: the
+//   exclusive prefix sum of the counts, the lists' offsets in one array
+//   (blocks of 1024 texels, then the blocks' sums, then added back);
+// - ALIASFREE_SCATTER: each sample's position stored at its list's offset
+//   plus its index;
+// - ALIASFREE_RESOLVE: each pixel's visibility from its sample's hidden bit
+//   (hard) or the popcount of its mask of light samples (soft).
+// A view sample is a pixel's surface (the camera pass's position and face
+// normal) that faces the light: samples facing away are in their own shadow
+// (visibility 0), pixels outside the light's map are lit.
+
+#if defined(ALIASFREE_SCAN_BLOCKS) || defined(ALIASFREE_SCAN_TOP)
+layout(local_size_x = 256) in;
+#else
+layout(local_size_x = 8, local_size_y = 8) in;
+#endif
+
+layout(std430, binding = 0) buffer aliasfreeCountsBuffer { uint aliasfreeCounts[]; };
+layout(std430, binding = 1) buffer aliasfreeOffsetsBuffer { uint aliasfreeOffsets[]; };
+layout(std430, binding = 2) buffer aliasfreeBlocksBuffer { uint aliasfreeBlocks[]; };
+// Per pixel: x = its texel (or aliasfreeNone) and y = its index in the
+// texel's list, then in the global array; without a sample, y says why.
+layout(std430, binding = 3) buffer aliasfreePixelsBuffer { uvec2 aliasfreePixels[]; };
+layout(std430, binding = 4) buffer aliasfreeSamplesBuffer { vec4 aliasfreeSamples[]; };
+layout(std430, binding = 5) buffer aliasfreeHiddenBuffer { uint aliasfreeHidden[]; };
+// Bounds as order-preserving integers: x min, max, y min, max (clip / w),
+// depth max; then the longest list and the number of samples.
+layout(std430, binding = 7) buffer aliasfreeStatsBuffer { int aliasfreeStats[]; };
+
+const uint aliasfreeNone = 0xffffffffu;
+const uint aliasfreeBackground = 0u; // no surface: receivers keep their own
+const uint aliasfreeFacingAway = 1u; // in its own shadow
+const uint aliasfreeOutside = 2u;    // outside the light's map: lit
+
+uniform ivec2 aliasfreeScreen;  // pixels
+uniform int aliasfreeMapSize;   // texels a side
+uniform int aliasfreeTexels;    // aliasfreeMapSize^2; or, scanning blocks' sums, their number
+uniform sampler2D aliasfreePositions; // world position, w = 1 on a surface
+uniform sampler2D aliasfreeNormals;   // face normal towards the camera, w = 1 where defined
+uniform mat4 aliasfreeWorldToClip;    // the light's map (fitted, after ALIASFREE_BOUNDS)
+uniform vec4 aliasfreeLight;          // position (w = 1), or direction towards it (w = 0)
+uniform vec3 aliasfreeEye;            // the map's eye and axis, for depths
+uniform vec3 aliasfreeAxis;
+
+int aliasfreeOrdered(float f)
+{
+  int i = floatBitsToInt(f);
+  return i >= 0 ? i : i ^ 0x7fffffff;
+}
+
+uint aliasfreePixelIndex()
+{
+  return gl_GlobalInvocationID.y * uint(aliasfreeScreen.x) + gl_GlobalInvocationID.x;
+}
+
+bool aliasfreeInScreen()
+{
+  return all(lessThan(gl_GlobalInvocationID.xy, uvec2(aliasfreeScreen)));
+}
+
+// This pixel's view sample: false, with the reason in `why`, if there is none.
+bool aliasfreeViewSample(out vec3 position, out vec2 ndc, out uint why)
+{
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  vec4 p = texelFetch(aliasfreePositions, pixel, 0);
+  why = aliasfreeBackground;
+  position = p.xyz;
+  ndc = vec2(0.0);
+  if (p.w < 0.5)
+  {
+    return false;
+  }
+  vec4 n = texelFetch(aliasfreeNormals, pixel, 0);
+  vec3 towards = aliasfreeLight.w > 0.5 ? aliasfreeLight.xyz - p.xyz : aliasfreeLight.xyz;
+  why = aliasfreeFacingAway;
+  if (n.w > 0.5 && dot(n.xyz, towards) <= 0.0)
+  {
+    return false; // points and lines (no face) face every way
+  }
+  vec4 clip = aliasfreeWorldToClip * vec4(p.xyz, 1.0);
+  why = aliasfreeOutside;
+  if (clip.w <= 0.0)
+  {
+    return false;
+  }
+  ndc = clip.xy / clip.w;
+  return all(lessThanEqual(abs(ndc), vec2(1.0)));
+}
+
+#ifdef ALIASFREE_BOUNDS
+void main()
+{
+  vec3 p;
+  vec2 ndc;
+  uint why;
+  if (!aliasfreeInScreen() || !aliasfreeViewSample(p, ndc, why))
+  {
+    return;
+  }
+  atomicMin(aliasfreeStats[0], aliasfreeOrdered(ndc.x));
+  atomicMax(aliasfreeStats[1], aliasfreeOrdered(ndc.x));
+  atomicMin(aliasfreeStats[2], aliasfreeOrdered(ndc.y));
+  atomicMax(aliasfreeStats[3], aliasfreeOrdered(ndc.y));
+  atomicMax(aliasfreeStats[4], aliasfreeOrdered(dot(p - aliasfreeEye, aliasfreeAxis)));
+}
+#endif
+
+#ifdef ALIASFREE_COUNT
+void main()
+{
+  if (!aliasfreeInScreen())
+  {
+    return;
+  }
+  vec3 p;
+  vec2 ndc;
+  uint why;
+  uint pixel = aliasfreePixelIndex();
+  if (!aliasfreeViewSample(p, ndc, why))
+  {
+    aliasfreePixels[pixel] = uvec2(aliasfreeNone, why);
+    return;
+  }
+  ivec2 t = clamp(ivec2((ndc * 0.5 + 0.5) * float(aliasfreeMapSize)), ivec2(0),
+    ivec2(aliasfreeMapSize - 1));
+  uint texel = uint(t.y * aliasfreeMapSize + t.x);
+  uint index = atomicAdd(aliasfreeCounts[texel], 1u);
+  aliasfreePixels[pixel] = uvec2(texel, index);
+  atomicMax(aliasfreeStats[5], int(index) + 1);
+  atomicAdd(aliasfreeStats[6], 1);
+}
+#endif
+
+#if defined(ALIASFREE_SCAN_BLOCKS) || defined(ALIASFREE_SCAN_TOP)
+// Exclusive prefix sum of `per` consecutive values a thread, 256 threads:
+// each thread sums its own, the threads' sums are scanned in shared memory
+// (Hillis and Steele), then each thread writes its values' prefixes.
+shared uint aliasfreeSums[256];
+
+uint aliasfreeRead(uint i);
+void aliasfreeWrite(uint i, uint value);
+
+uint aliasfreeScan(uint first, uint per, uint end)
+{
+  uint own = 0u;
+  for (uint i = first; i < min(first + per, end); ++i)
+  {
+    own += aliasfreeRead(i);
+  }
+  uint thread = gl_LocalInvocationID.x;
+  aliasfreeSums[thread] = own;
+  barrier();
+  for (uint step = 1u; step < 256u; step *= 2u)
+  {
+    uint add = thread >= step ? aliasfreeSums[thread - step] : 0u;
+    barrier();
+    aliasfreeSums[thread] += add;
+    barrier();
+  }
+  uint running = aliasfreeSums[thread] - own;
+  for (uint i = first; i < min(first + per, end); ++i)
+  {
+    uint value = aliasfreeRead(i);
+    aliasfreeWrite(i, running);
+    running += value;
+  }
+  return aliasfreeSums[255];
+}
+#endif
+
+#ifdef ALIASFREE_SCAN_BLOCKS
+uint aliasfreeRead(uint i) { return aliasfreeCounts[i]; }
+void aliasfreeWrite(uint i, uint value) { aliasfreeOffsets[i] = value; }
+void main()
+{
+  uint block = gl_WorkGroupID.x;
+  uint total = aliasfreeScan(block * 1024u + gl_LocalInvocationID.x * 4u, 4u, uint(aliasfreeTexels));
+  if (gl_LocalInvocationID.x == 0u)
+  {
+    aliasfreeBlocks[block] = total;
+  }
+}
+#endif
+
+#ifdef ALIASFREE_SCAN_TOP
+// One work group over the blocks' sums, in place.
+uint aliasfreeRead(uint i) { return aliasfreeBlocks[i]; }
+void aliasfreeWrite(uint i, uint value) { aliasfreeBlocks[i] = value; }
+void main()
+{
+  uint blocks = uint(aliasfreeTexels);
+  uint per = (blocks + 255u) / 256u;
+  aliasfreeScan(gl_LocalInvocationID.x * per, per, blocks);
+}
+#endif
+
+#ifdef ALIASFREE_SCAN_ADD
+void main()
+{
+  uint i = gl_GlobalInvocationID.y * uint(aliasfreeMapSize) + gl_GlobalInvocationID.x;
+  if (gl_GlobalInvocationID.x < uint(aliasfreeMapSize) && i < uint(aliasfreeTexels))
+  {
+    aliasfreeOffsets[i] += aliasfreeBlocks[i >> 10];
+  }
+}
+#endif
+
+#ifdef ALIASFREE_SCATTER
+void main()
+{
+  if (!aliasfreeInScreen())
+  {
+    return;
+  }
+  uint pixel = aliasfreePixelIndex();
+  uvec2 entry = aliasfreePixels[pixel];
+  if (entry.x == aliasfreeNone)
+  {
+    return;
+  }
+  uint slot = aliasfreeOffsets[entry.x] + entry.y;
+  aliasfreeSamples[slot] =
+    vec4(texelFetch(aliasfreePositions, ivec2(gl_GlobalInvocationID.xy), 0).xyz, 1.0);
+  aliasfreePixels[pixel].y = slot;
+}
+#endif
+
+#ifdef ALIASFREE_RESOLVE
+uniform int aliasfreeWords;           // 0: hard, one bit a sample; else words a mask
+uniform vec3 aliasfreeCameraPosition;
+layout(rgba32f, binding = 0) writeonly uniform image2D aliasfreeVisibility;
+
+void main()
+{
+  if (!aliasfreeInScreen())
+  {
+    return;
+  }
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  uvec2 entry = aliasfreePixels[aliasfreePixelIndex()];
+  vec4 p = texelFetch(aliasfreePositions, pixel, 0);
+  float visibility = 1.0;
+  if (entry.x != aliasfreeNone)
+  {
+    uint slot = entry.y;
+    if (aliasfreeWords == 0)
+    {
+      visibility = float(1u - ((aliasfreeHidden[slot >> 5] >> (slot & 31u)) & 1u));
+    }
+    else
+    {
+      uint hidden = 0u;
+      for (int w = 0; w < aliasfreeWords; ++w)
+      {
+        hidden += uint(bitCount(aliasfreeHidden[slot * uint(aliasfreeWords) + uint(w)]));
+      }
+      visibility = 1.0 - float(hidden) / float(32 * aliasfreeWords);
+    }
+  }
+  else if (entry.y == aliasfreeFacingAway)
+  {
+    visibility = 0.0;
+  }
+  // (visibility, valid, camera distance): vtkShadowScreenBuffers::BeginVisibility().
+  float valid = entry.x != aliasfreeNone || entry.y != aliasfreeBackground ? 1.0 : 0.0;
+  imageStore(aliasfreeVisibility, pixel,
+    vec4(visibility, valid, valid > 0.5 ? distance(p.xyz, aliasfreeCameraPosition) : 0.0, 0.0));
+}
+#endif

@@ -1,0 +1,38 @@
+// Builds the lookup table (vtkAliasFreeLookup.glsl): one invocation per
+// 32-bit word of a cell's mask.
+// Uses: vtkAliasFreeLookup.glsl (prepended by the pass).
+
+layout(local_size_x = 64) in;
+
+layout(std430, binding = 4) readonly buffer aliasfreeLightSamplesBuffer
+{
+  vec4 aliasfreeLightSamples[]; // xyz: in the light's frame, unit ball or unit directions
+};
+layout(std430, binding = 6) writeonly buffer aliasfreeLookupBuffer
+{
+  uint aliasfreeLookup[];
+};
+uniform int aliasfreeCells;
+
+void main()
+{
+  int index = int(gl_GlobalInvocationID.x);
+  if (index >= aliasfreeCells * aliasfreeWords)
+  {
+    return;
+  }
+  int cell = index / aliasfreeWords;
+  int word = index % aliasfreeWords;
+  vec3 n;
+  float d;
+  aliasfreeCellPlane(cell, n, d);
+  uint bits = 0u;
+  for (int b = 0; b < 32; ++b)
+  {
+    if (dot(n, aliasfreeLightSamples[32 * word + b].xyz) > d)
+    {
+      bits |= 1u << uint(b);
+    }
+  }
+  aliasfreeLookup[index] = bits;
+}

@@ -1,0 +1,672 @@
+#include "vtkAliasFreeShadowPass.h"
+
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkShadowCasterRegistry.h"
+#include "vtkShadowCompute.h"
+#include "vtkShadowDrawer.h"
+#include "vtkShadowGeometry.h"
+#include "vtkShadowMapManager.h"
+#include "vtkShadowSampling.h"
+#include "vtkShadowScreenBuffers.h"
+#include "vtkTextureObject.h"
+#include "vtkTriangleFilter.h"
+#include "vtk_glew.h"
+
+#include "vtkAliasFreeCastersFS.h"
+#include "vtkAliasFreeCastersGS.h"
+#include "vtkAliasFreeCastersVS.h"
+#include "vtkAliasFreeListsCS.h"
+#include "vtkAliasFreeLookup.h"
+#include "vtkAliasFreeLookupBuildCS.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <memory>
+#include <random>
+#include <tuple>
+#include <unordered_map>
+#include <vector>
+
+namespace
+{
+// Lookup table cells (vtkAliasFreeLookup.glsl): polar angles x azimuths,
+// times distances for spot lights.
+constexpr int LookupAngles = 32 * 128;
+constexpr int LookupDistances = 64;
+
+// Storage buffer bindings, as the shaders declare them.
+enum Binding : unsigned int
+{
+  Counts = 0,
+  Offsets = 1,
+  Blocks = 2,
+  Pixels = 3,
+  Samples = 4,
+  Hidden = 5,
+  Lookup = 6,
+  Stats = 7
+};
+
+// Stats: clip-space bounds (order-preserving integers), depth, longest list,
+// number of samples.
+int Ordered(float f)
+{
+  int i;
+  std::memcpy(&i, &f, sizeof i);
+  return i >= 0 ? i : i ^ 0x7fffffff;
+}
+float FromOrdered(int i)
+{
+  i = i >= 0 ? i : i ^ 0x7fffffff;
+  float f;
+  std::memcpy(&f, &i, sizeof f);
+  return f;
+}
+
+// What the pass keeps of each caster's polydata: its triangles, and whether
+// they close a volume (every edge used once in each direction) and which
+// way their normals point (the sign of the enclosed volume).
+struct CasterTriangles
+{
+  std::shared_ptr<vtkShadowGeometry> Geometry;
+  bool Closed = false;
+  float Orientation = 1.0f;
+};
+
+void BuildTriangles(vtkPolyData* data, CasterTriangles& value)
+{
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputData(vtkShadowCasterRegistry::MergedFaces(data));
+  triangles->PassLinesOff();
+  triangles->PassVertsOff();
+  triangles->Update();
+  vtkPolyData* mesh = triangles->GetOutput();
+
+  std::unordered_map<unsigned long long, int> directed;
+  const unsigned long long points = static_cast<unsigned long long>(mesh->GetNumberOfPoints());
+  double volume = 0.0;
+  vtkIdType n = 0;
+  const vtkIdType* ids = nullptr;
+  vtkCellArray* polys = mesh->GetPolys();
+  bool manifold = true;
+  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
+  {
+    if (n != 3)
+    {
+      manifold = false;
+      continue;
+    }
+    double p[3][3];
+    for (int k = 0; k < 3; ++k)
+    {
+      mesh->GetPoint(ids[k], p[k]);
+      const auto a = static_cast<unsigned long long>(ids[k]);
+      const auto b = static_cast<unsigned long long>(ids[(k + 1) % 3]);
+      manifold = manifold && ++directed[a * points + b] == 1;
+    }
+    // Divergence theorem: the signed volume of the tetrahedra to the origin.
+    volume += (p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) -
+                p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
+                p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0])) /
+      6.0;
+  }
+  for (const auto& edge : directed)
+  {
+    const unsigned long long a = edge.first / points, b = edge.first % points;
+    manifold = manifold && directed.count(b * points + a) == 1;
+    if (!manifold)
+    {
+      break;
+    }
+  }
+  value.Closed = manifold && !directed.empty() && volume != 0.0;
+  value.Orientation = volume < 0.0 ? -1.0f : 1.0f;
+  value.Geometry = std::shared_ptr<vtkShadowGeometry>(new vtkShadowGeometry,
+    [](vtkShadowGeometry* geometry)
+    {
+      geometry->ReleaseGraphicsResources(nullptr);
+      delete geometry;
+    });
+  value.Geometry->SetInput(mesh);
+}
+
+// A unit vector's two perpendicular unit vectors.
+void Basis(const glm::dvec3& axis, glm::dvec3& e1, glm::dvec3& e2)
+{
+  const glm::dvec3 helper =
+    std::abs(axis.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0);
+  e1 = glm::normalize(glm::cross(axis, helper));
+  e2 = glm::cross(axis, e1);
+}
+
+// One light's lookup table and what it was built for.
+struct LookupTable
+{
+  std::tuple<int, int, unsigned int> Key{ -1, 0, 0u }; ///< shape, samples, seed
+  vtkShadowCompute::Buffer Masks;
+};
+
+std::string WithDefines(const std::string& source, const std::string& defines)
+{
+  return "#version 430\n" + defines + source;
+}
+}
+
+struct vtkAliasFreeShadowPass::Internals
+{
+  vtkShadowCasterCache<CasterTriangles> Casters;
+  vtkShadowCompute::Program Bounds, Count, ScanBlocks, ScanTop, ScanAdd, Scatter, Resolve,
+    BuildLookup;
+  vtkShadowCompute::Buffer CountsBuffer, OffsetsBuffer, BlocksBuffer, PixelsBuffer, SamplesBuffer,
+    HiddenBuffer, StatsBuffer, LightSamples;
+  std::vector<std::unique_ptr<LookupTable>> Lookups; // per light slot
+  vtkSmartPointer<vtkTextureObject> Target;          // the casters' draw: a map-sized target
+  std::string Vertex = WithDefines(vtkAliasFreeCastersVS, "");
+  std::string HardGeometry = WithDefines(vtkAliasFreeCastersGS, "");
+  std::string HardFragment = WithDefines(vtkAliasFreeCastersFS, "");
+  std::string SoftGeometry = WithDefines(vtkAliasFreeCastersGS, "#define ALIASFREE_SOFT\n");
+  std::string SoftFragment = WithDefines(
+    std::string(vtkAliasFreeLookup) + "\n" + vtkAliasFreeCastersFS, "#define ALIASFREE_SOFT\n");
+  bool Failed = false; ///< a shader did not build: reported once
+  bool MemoryReported = false;
+
+  bool BuildPrograms(vtkAliasFreeShadowPass* pass)
+  {
+    if (this->Resolve.IsBuilt())
+    {
+      return true;
+    }
+    const std::pair<vtkShadowCompute::Program*, const char*> lists[] = { { &this->Bounds,
+                                                                           "ALIASFREE_BOUNDS" },
+      { &this->Count, "ALIASFREE_COUNT" }, { &this->ScanBlocks, "ALIASFREE_SCAN_BLOCKS" },
+      { &this->ScanTop, "ALIASFREE_SCAN_TOP" }, { &this->ScanAdd, "ALIASFREE_SCAN_ADD" },
+      { &this->Scatter, "ALIASFREE_SCATTER" }, { &this->Resolve, "ALIASFREE_RESOLVE" } };
+    std::string log;
+    for (const auto& program : lists)
+    {
+      if (!program.first->Build(
+            WithDefines(vtkAliasFreeListsCS, "#define " + std::string(program.second) + "\n"),
+            &log))
+      {
+        vtkErrorWithObjectMacro(
+          pass, "aliasfree: the " << program.second << " compute shader did not build: " << log);
+        return false;
+      }
+    }
+    if (!this->BuildLookup.Build(
+          WithDefines(std::string(vtkAliasFreeLookup) + "\n" + vtkAliasFreeLookupBuildCS, ""),
+          &log))
+    {
+      vtkErrorWithObjectMacro(
+        pass, "aliasfree: the lookup table's compute shader did not build: " << log);
+      return false;
+    }
+    return true;
+  }
+
+  static void Grow(vtkShadowCompute::Buffer& buffer, size_t bytes)
+  {
+    if (buffer.GetSize() < bytes)
+    {
+      buffer.Allocate(bytes);
+    }
+  }
+};
+
+vtkStandardNewMacro(vtkAliasFreeShadowPass);
+
+//------------------------------------------------------------------------------
+vtkAliasFreeShadowPass::vtkAliasFreeShadowPass()
+  : Internal(new Internals)
+{
+}
+
+vtkAliasFreeShadowPass::~vtkAliasFreeShadowPass() = default;
+
+//------------------------------------------------------------------------------
+void vtkAliasFreeShadowPass::SetNumberOfLightSamples(int count)
+{
+  const int clamped = std::max(32, std::min(1024, (count + 31) / 32 * 32));
+  if (clamped != this->NumberOfLightSamples)
+  {
+    this->NumberOfLightSamples = clamped;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkAliasFreeShadowPass::SetLightScale(double x, double y, double z)
+{
+  const double scale[3] = { std::max(x, 1.0e-3), std::max(y, 1.0e-3), std::max(z, 1.0e-3) };
+  if (!std::equal(scale, scale + 3, this->LightScale))
+  {
+    std::copy(scale, scale + 3, this->LightScale);
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkAliasFreeShadowPass::RenderShadowMaps(const vtkRenderState* s)
+{
+  // The light's own depth map serves only what has no view sample:
+  // translucent surfaces.
+  return this->RenderLightDepthMaps(s, false);
+}
+
+//------------------------------------------------------------------------------
+std::string vtkAliasFreeShadowPass::GetCameraPassImplementation()
+{
+  return "  gl_FragData[0] = vec4(vtkShadowPositionWC.xyz / vtkShadowPositionWC.w, 1.0);\n"
+         "  gl_FragData[1] = vec4(vtkShadowNormalWC, vtkShadowFaceDefined ? 1.0 : 0.0);\n";
+}
+
+//------------------------------------------------------------------------------
+bool vtkAliasFreeShadowPass::RenderScreenSpace(const vtkRenderState* s)
+{
+  auto* context = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
+  this->NumberOfViewSamples = 0;
+  this->LongestList = 0;
+  if (!this->CheckCompute(context) || this->Internal->Failed)
+  {
+    return false;
+  }
+  if (!this->Internal->BuildPrograms(this))
+  {
+    this->Internal->Failed = true;
+    return false;
+  }
+  const int width = this->Screen->GetWidth(), height = this->Screen->GetHeight();
+  const auto& lights = this->Maps->GetLights();
+  const bool soft = this->Variant == Soft;
+  const size_t pixels = static_cast<size_t>(width) * height;
+  const size_t texels = static_cast<size_t>(this->MapSize) * this->MapSize;
+  const size_t words = soft ? static_cast<size_t>(this->NumberOfLightSamples / 32) : 0;
+
+  // Memory, before anything is allocated: the camera pass's two targets,
+  // per pixel its entry and (at most) its sample and mask, per texel its
+  // count and offset (and the draw's target), the lookup tables.
+  double bytes = pixels * (2 * 16 + 8 + 16 + (soft ? 4 * words : 0.125)) + texels * (4 + 4 + 1) +
+    (texels / 1024 + 1) * 4.0;
+  for (const auto& light : lights)
+  {
+    if (soft && light.Radius > 0.0)
+    {
+      bytes += LookupAngles * LookupDistances * 4.0 * words + this->NumberOfLightSamples * 16.0;
+    }
+  }
+  this->MemoryBytes = bytes;
+  if (bytes > this->MemoryLimit * 1024.0 * 1024.0)
+  {
+    if (!this->Internal->MemoryReported)
+    {
+      vtkErrorMacro("aliasfree: this frame needs "
+        << std::ceil(bytes / (1024.0 * 1024.0)) << " MiB for its lists, masks and tables (" << width
+        << "x" << height << " view samples, a " << this->MapSize << "^2 map"
+        << (soft ? ", " + std::to_string(this->NumberOfLightSamples) + " light samples" : "")
+        << "), over MemoryLimit (" << this->MemoryLimit
+        << " MiB): drawing without shadows. Use a smaller window, map or fewer light samples, "
+           "or raise MemoryLimit.");
+      this->Internal->MemoryReported = true;
+    }
+    return false;
+  }
+  this->Internal->MemoryReported = false;
+
+  vtkTextureObject* positions = this->Screen->GetTexture("aliasfree.positions", 4);
+  vtkTextureObject* normals = this->Screen->GetTexture("aliasfree.normals", 4);
+  if (!this->RenderCameraDepth(s, { positions, normals }))
+  {
+    return false;
+  }
+
+  Internals& in = *this->Internal;
+  Internals::Grow(in.CountsBuffer, texels * 4);
+  Internals::Grow(in.OffsetsBuffer, texels * 4);
+  Internals::Grow(in.BlocksBuffer, (texels / 1024 + 1) * 4);
+  Internals::Grow(in.PixelsBuffer, pixels * 8);
+  Internals::Grow(in.SamplesBuffer, pixels * 16);
+  if (!in.Target || in.Target->GetWidth() != static_cast<unsigned int>(this->MapSize))
+  {
+    in.Target = vtkSmartPointer<vtkTextureObject>::New();
+    in.Target->SetContext(context);
+    in.Target->Allocate2D(this->MapSize, this->MapSize, 1, VTK_UNSIGNED_CHAR);
+  }
+  in.Lookups.resize(lights.size());
+
+  positions->Activate();
+  normals->Activate();
+  bool drawn = true;
+  for (size_t slot = 0; slot < lights.size() && drawn; ++slot)
+  {
+    drawn = this->RenderLight(s, static_cast<int>(slot));
+  }
+  positions->Deactivate();
+  normals->Deactivate();
+  in.Casters.Prune(*this->Casters);
+  return drawn;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAliasFreeShadowPass::RenderLight(const vtkRenderState* s, int slot)
+{
+  auto* context = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
+  Internals& in = *this->Internal;
+  const auto& light = this->Maps->GetLights()[slot];
+  const int width = this->Screen->GetWidth(), height = this->Screen->GetHeight();
+  const int mapSize = this->MapSize;
+  const unsigned int texels = static_cast<unsigned int>(mapSize) * mapSize;
+  const bool soft = this->Variant == Soft && light.Radius > 0.0;
+  const int words = soft ? this->NumberOfLightSamples / 32 : 0;
+  vtkTextureObject* positions = this->Screen->GetTexture("aliasfree.positions", 4);
+  vtkTextureObject* normals = this->Screen->GetTexture("aliasfree.normals", 4);
+
+  const glm::dvec3 towards = light.Directional ? -light.Map.Direction : light.Position;
+  const float lightUniform[4] = { static_cast<float>(towards.x), static_cast<float>(towards.y),
+    static_cast<float>(towards.z), light.Directional ? 0.0f : 1.0f };
+  const glm::vec3 eye(light.Map.Eye), axis(light.Map.Direction);
+  const unsigned int groupsX = (width + 7) / 8, groupsY = (height + 7) / 8;
+  auto common = [&](vtkShadowCompute::Program& program, const glm::dmat4& worldToClip)
+  {
+    program.Use(context);
+    program.SetUniform2i("aliasfreeScreen", width, height);
+    program.SetUniformi("aliasfreeMapSize", mapSize);
+    program.SetUniformi("aliasfreeTexels", static_cast<int>(texels));
+    program.SetUniformi("aliasfreePositions", positions->GetTextureUnit());
+    program.SetUniformi("aliasfreeNormals", normals->GetTextureUnit());
+    const glm::mat4 m(worldToClip);
+    program.SetUniformMatrix4f("aliasfreeWorldToClip", glm::value_ptr(m));
+    program.SetUniform4f("aliasfreeLight", lightUniform);
+    program.SetUniform3f("aliasfreeEye", glm::value_ptr(eye));
+    program.SetUniform3f("aliasfreeAxis", glm::value_ptr(axis));
+  };
+  in.CountsBuffer.BindStorage(Counts);
+  in.OffsetsBuffer.BindStorage(Offsets);
+  in.BlocksBuffer.BindStorage(Blocks);
+  in.PixelsBuffer.BindStorage(Pixels);
+  in.SamplesBuffer.BindStorage(Samples);
+
+  // 1. The view samples' bounds in the light's map (section 4.3).
+  const int initial[8] = { Ordered(2.0f), Ordered(-2.0f), Ordered(2.0f), Ordered(-2.0f),
+    Ordered(-VTK_FLOAT_MAX), 0, 0, 0 };
+  in.StatsBuffer.Allocate(sizeof initial, initial);
+  in.StatsBuffer.BindStorage(Stats);
+  const glm::dmat4 lightToClip = light.Map.Projection * light.Map.View;
+  common(in.Bounds, lightToClip);
+  in.Bounds.Dispatch(groupsX, groupsY);
+  vtkShadowCompute::Barrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  int stats[8];
+  in.StatsBuffer.Read(stats, sizeof stats);
+  vtkShadowFrustum fitted = light.Map;
+  const float far = std::max(FromOrdered(stats[4]), static_cast<float>(light.Map.Near));
+  if (this->FitToViewSamples && stats[0] <= stats[1])
+  {
+    // Crop the clip space to the bounds, two texels wider on each side.
+    double x0 = FromOrdered(stats[0]), x1 = FromOrdered(stats[1]);
+    double y0 = FromOrdered(stats[2]), y1 = FromOrdered(stats[3]);
+    const double mx = 2.0 * std::max(x1 - x0, 1.0e-4) / mapSize;
+    const double my = 2.0 * std::max(y1 - y0, 1.0e-4) / mapSize;
+    x0 = std::max(x0 - mx, -1.0);
+    x1 = std::min(x1 + mx, 1.0);
+    y0 = std::max(y0 - my, -1.0);
+    y1 = std::min(y1 + my, 1.0);
+    glm::dmat4 crop(1.0);
+    crop[0][0] = 2.0 / (x1 - x0);
+    crop[1][1] = 2.0 / (y1 - y0);
+    crop[3][0] = -(x0 + x1) / (x1 - x0);
+    crop[3][1] = -(y0 + y1) / (y1 - y0);
+    fitted.Projection = crop * light.Map.Projection;
+    fitted.WorldToMap = glm::translate(glm::dmat4(1.0), glm::dvec3(0.5)) *
+      glm::scale(glm::dmat4(1.0), glm::dvec3(0.5)) * fitted.Projection * fitted.View;
+  }
+  const glm::dmat4 worldToClip = fitted.Projection * fitted.View;
+
+  // 2. Lists: counts, offsets (prefix sum), samples packed at them.
+  in.StatsBuffer.Allocate(sizeof initial, initial);
+  in.StatsBuffer.BindStorage(Stats);
+  in.CountsBuffer.Clear(0);
+  common(in.Count, worldToClip);
+  in.Count.Dispatch(groupsX, groupsY);
+  vtkShadowCompute::Barrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  in.StatsBuffer.Read(stats, sizeof stats);
+  const unsigned int samples = static_cast<unsigned int>(stats[6]);
+  this->NumberOfViewSamples += samples;
+  this->LongestList = std::max(this->LongestList, stats[5]);
+
+  const unsigned int blocks = (texels + 1023) / 1024;
+  common(in.ScanBlocks, worldToClip);
+  in.ScanBlocks.Dispatch(blocks);
+  vtkShadowCompute::Barrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  common(in.ScanTop, worldToClip);
+  in.ScanTop.SetUniformi("aliasfreeTexels", static_cast<int>(blocks));
+  in.ScanTop.Dispatch(1);
+  vtkShadowCompute::Barrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  common(in.ScanAdd, worldToClip);
+  in.ScanAdd.Dispatch((mapSize + 7) / 8, (mapSize + 7) / 8);
+  vtkShadowCompute::Barrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  common(in.Scatter, worldToClip);
+  in.Scatter.Dispatch(groupsX, groupsY);
+  vtkShadowCompute::Barrier(GL_SHADER_STORAGE_BARRIER_BIT);
+
+  // 3. Hidden bits (hard) or masks of light samples (soft), cleared.
+  Internals::Grow(in.HiddenBuffer,
+    std::max<size_t>(soft ? static_cast<size_t>(samples) * words * 4 : (samples / 32 + 1) * 4, 4));
+  in.HiddenBuffer.Clear(0);
+  in.HiddenBuffer.BindStorage(Hidden);
+
+  // The light's samples and lookup table (soft), built when they change.
+  glm::dvec3 e1, e2;
+  Basis(light.Directional ? -light.Map.Direction : light.Direction, e1, e2);
+  const glm::dvec3 e3 = light.Directional ? -light.Map.Direction : light.Direction;
+  const double spread = light.Directional ? std::tan(glm::radians(light.Radius)) : 0.0;
+  const double* scale = this->LightScale;
+  glm::mat3 toLight(1.0f);
+  float reach = 0.0f;
+  if (soft)
+  {
+    auto& table = in.Lookups[slot];
+    if (!table)
+    {
+      table.reset(new LookupTable);
+    }
+    const auto key = std::make_tuple(
+      light.Directional ? Disc : this->LightShape, this->NumberOfLightSamples, this->Seed);
+    if (table->Key != key)
+    {
+      // In the light's frame (x, y across its axis, z along it): the unit
+      // ball (sphere), disc or square; directional lights: the unit disc.
+      const int n = this->NumberOfLightSamples;
+      std::vector<glm::dvec3> points;
+      if (light.Directional || this->LightShape == Disc)
+      {
+        for (const auto& d : vtkShadowSampling::StratifiedDisc(n, this->Seed))
+        {
+          points.emplace_back(d, 0.0);
+        }
+      }
+      else if (this->LightShape == Sphere)
+      {
+        points = vtkShadowSampling::HaltonBall(n, this->Seed);
+      }
+      else
+      {
+        std::mt19937 generator(this->Seed);
+        for (int i = 0; i < n; ++i)
+        {
+          // Stratified along one axis, Halton's radical inverse along the other.
+          points.emplace_back(2.0 * (i + vtkShadowSampling::Uniform(generator)) / n - 1.0,
+            2.0 * vtkShadowSampling::RadicalInverse(static_cast<unsigned int>(i + 1), 2) - 1.0,
+            0.0);
+        }
+      }
+      points.resize(n, glm::dvec3(0.0)); // StratifiedDisc rounds to a square count
+      std::vector<float> packed(4 * static_cast<size_t>(n), 0.0f);
+      for (int i = 0; i < n; ++i)
+      {
+        packed[4 * i] = static_cast<float>(points[i].x);
+        packed[4 * i + 1] = static_cast<float>(points[i].y);
+        packed[4 * i + 2] = static_cast<float>(points[i].z);
+      }
+      in.LightSamples.Allocate(packed.size() * sizeof(float), packed.data());
+      const int cells = LookupAngles * LookupDistances;
+      table->Masks.Allocate(static_cast<size_t>(cells) * words * 4);
+      in.LightSamples.BindStorage(Samples);
+      table->Masks.BindStorage(Lookup);
+      in.BuildLookup.Use(context);
+      in.BuildLookup.SetUniformi("aliasfreeCells", cells);
+      in.BuildLookup.SetUniformi("aliasfreeWords", words);
+      in.BuildLookup.Dispatch((cells * words + 63) / 64);
+      vtkShadowCompute::Barrier(GL_SHADER_STORAGE_BARRIER_BIT);
+      in.SamplesBuffer.BindStorage(Samples);
+      table->Key = key;
+    }
+    table->Masks.BindStorage(Lookup);
+    // World normals into the frame, scaled by the light's size and shape
+    // (an ellipsoid's planes are the ball's planes of the scaled normal).
+    const glm::dmat3 frame(e1, e2, e3);
+    const glm::dvec3 size = light.Directional
+      ? glm::dvec3(spread, spread, 0.0)
+      : light.Radius * glm::dvec3(scale[0], scale[1], scale[2]);
+    const glm::dmat3 shape(
+      glm::dvec3(size.x, 0.0, 0.0), glm::dvec3(0.0, size.y, 0.0), glm::dvec3(0.0, 0.0, size.z));
+    toLight = glm::mat3(shape * glm::transpose(frame));
+    reach = static_cast<float>(light.Directional ? spread
+                                                 : light.Radius *
+          (this->LightShape == Sphere    ? std::max({ scale[0], scale[1], scale[2] })
+              : this->LightShape == Disc ? std::max(scale[0], scale[1])
+                                         : std::sqrt(scale[0] * scale[0] + scale[1] * scale[1])));
+  }
+
+  // 4. Every caster triangle over the texels it touches (its influence
+  // region, soft), testing their samples.
+  if (samples > 0)
+  {
+    vtkShadowDrawSetup setup;
+    setup.View = &fitted;
+    setup.Colours = { in.Target };
+    setup.DepthTest = false;
+    setup.Draw = vtkShadowDrawSetup::Props::None;
+    const glm::mat4 clip(worldToClip);
+    const glm::vec3 side0(light.Directional ? e1 : glm::dvec3(0.0)),
+      side1(light.Directional ? e2 : glm::dvec3(0.0));
+    const float epsilon =
+      static_cast<float>(light.Directional ? 1.0e-5 * (light.Map.Far - light.Map.Near) : 1.0e-5);
+    for (const vtkShadowCaster& caster : this->Casters->GetCasters())
+    {
+      if (caster.Data->GetNumberOfPolys() + caster.Data->GetNumberOfStrips() == 0)
+      {
+        continue;
+      }
+      CasterTriangles& triangles = in.Casters.Get(caster, BuildTriangles);
+      vtkShadowGeometry* geometry = triangles.Geometry.get();
+      geometry->SetModelToWorld(caster.ModelToWorld);
+      geometry->SetShaders(in.Vertex, soft ? in.SoftFragment : in.HardFragment,
+        soft ? in.SoftGeometry : in.HardGeometry);
+      const int closed = triangles.Closed ? 1 : 0;
+      const float orientation = triangles.Orientation;
+      geometry->SetUniforms(
+        [=](vtkShaderProgram* program)
+        {
+          program->SetUniformMatrix4x4(
+            "aliasfreeWorldToClip", const_cast<float*>(glm::value_ptr(clip)));
+          program->SetUniform4f("aliasfreeLight", lightUniform);
+          program->SetUniformf("aliasfreeMapSize", static_cast<float>(mapSize));
+          program->SetUniformi("aliasfreeMapTexels", mapSize);
+          program->SetUniformi("aliasfreeClosed", closed);
+          program->SetUniformf("aliasfreeOrientation", orientation);
+          program->SetUniformf("aliasfreeEpsilon", epsilon);
+          if (soft)
+          {
+            program->SetUniformf("aliasfreeReach", reach);
+            program->SetUniform3f("aliasfreeEye", glm::value_ptr(eye));
+            program->SetUniform3f("aliasfreeAxis", glm::value_ptr(axis));
+            program->SetUniform3f("aliasfreeSide0", glm::value_ptr(side0));
+            program->SetUniform3f("aliasfreeSide1", glm::value_ptr(side1));
+            program->SetUniformf("aliasfreeFar", far);
+            program->SetUniformMatrix3x3(
+              "aliasfreeToLight", const_cast<float*>(glm::value_ptr(toLight)));
+            program->SetUniformi("aliasfreeWords", words);
+          }
+        });
+      setup.Geometry.push_back(geometry);
+    }
+    if (!setup.Geometry.empty() && !this->Draw(s, setup))
+    {
+      vtkErrorMacro("aliasfree: drawing the casters into the map failed (its shaders, or its "
+                    "target): drawing without shadows.");
+      in.Failed = true;
+      return false;
+    }
+    vtkShadowCompute::Barrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  }
+
+  // 5. Each pixel's visibility, for the receivers.
+  vtkTextureObject* visibility = this->Screen->GetVisibility(slot);
+  const double* camera = s->GetRenderer()->GetActiveCamera()->GetPosition();
+  const float cameraPosition[3] = { static_cast<float>(camera[0]), static_cast<float>(camera[1]),
+    static_cast<float>(camera[2]) };
+  common(in.Resolve, worldToClip);
+  in.Resolve.SetUniformi("aliasfreeWords", words);
+  in.Resolve.SetUniform3f("aliasfreeCameraPosition", cameraPosition);
+  vtkShadowCompute::BindImage(0, visibility, GL_WRITE_ONLY, GL_RGBA32F);
+  in.Resolve.Dispatch(groupsX, groupsY);
+  vtkShadowCompute::Barrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkAliasFreeShadowPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  this->Superclass::ReleaseGraphicsResources(w);
+  Internals& in = *this->Internal;
+  in.Casters.Clear();
+  for (auto* program : { &in.Bounds, &in.Count, &in.ScanBlocks, &in.ScanTop, &in.ScanAdd,
+         &in.Scatter, &in.Resolve, &in.BuildLookup })
+  {
+    program->Release();
+  }
+  for (auto* buffer : { &in.CountsBuffer, &in.OffsetsBuffer, &in.BlocksBuffer, &in.PixelsBuffer,
+         &in.SamplesBuffer, &in.HiddenBuffer, &in.StatsBuffer, &in.LightSamples })
+  {
+    buffer->Release();
+  }
+  in.Lookups.clear();
+  if (in.Target)
+  {
+    in.Target->ReleaseGraphicsResources(w);
+    in.Target = nullptr;
+  }
+  in.Failed = false;
+}
+
+//------------------------------------------------------------------------------
+void vtkAliasFreeShadowPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Variant: " << (this->Variant == Hard ? "Hard" : "Soft") << "\n";
+  os << indent << "NumberOfLightSamples: " << this->NumberOfLightSamples << "\n";
+  static const char* shapes[] = { "Sphere", "Disc", "Rectangle" };
+  os << indent << "LightShape: " << shapes[this->LightShape] << "\n";
+  os << indent << "LightScale: " << this->LightScale[0] << " " << this->LightScale[1] << " "
+     << this->LightScale[2] << "\n";
+  os << indent << "FitToViewSamples: " << this->FitToViewSamples << "\n";
+  os << indent << "Seed: " << this->Seed << "\n";
+  os << indent << "MemoryLimit: " << this->MemoryLimit << "\n";
+  os << indent << "MemoryBytes: " << this->MemoryBytes << "\n";
+  os << indent << "NumberOfViewSamples: " << this->NumberOfViewSamples << "\n";
+  os << indent << "LongestList: " << this->LongestList << "\n";
+}

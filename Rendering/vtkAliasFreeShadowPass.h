@@ -1,0 +1,190 @@
+/**
+ * @class   vtkAliasFreeShadowPass
+ * @brief   Alias-free shadow maps and sample-based soft shadows (Sintorn,
+ *          Eisemann & Assarsson, "Sample Based Visibility for Soft Shadows
+ *          using Alias-free Shadow Maps", EGSR 2008), in OpenGL 4.3 compute.
+ *
+ * Technique `aliasfree`. Shadows are computed for exactly the points the
+ * camera sees, not for a map's texels, so there is no aliasing and, for
+ * closed casters, no depth bias. Per frame and light:
+ *
+ *  1. view samples (section 3): the camera pass writes each pixel's surface
+ *     position and face normal; the visible, light-front-facing ones are
+ *     projected into the light's map (its frustum first fitted to their
+ *     bounds, section 4.3), counted per texel by atomic increments, offset by
+ *     a prefix sum over the map and packed in one global array (3.1);
+ *  2. every caster triangle is drawn into the map by a geometry shader that
+ *     grows it conservatively by half a texel (3.2; the exact Minkowski sum,
+ *     at most 9 vertices) or, for soft shadows, covers its influence region
+ *     (4.1: the convex hull of the light's bounding hexagons seen from each
+ *     vertex and projected to the farthest view sample's depth); the fragment
+ *     shader walks the texel's list (empty ones skipped) and tests each
+ *     sample (3.3): hard, against the triangle's plane and the planes through
+ *     its edges and the light, a hidden sample's bit set by an atomic OR;
+ *     soft, the bitmask of the N light samples behind each of the planes
+ *     through the sample and the triangle's edges (and behind the triangle)
+ *     from a lookup table indexed by the plane's two angles and distance
+ *     (4.2), ANDed, ORed into the sample's mask;
+ *  3. visibility = 1 - hidden (hard) or 1 - popcount / N (soft), per pixel,
+ *     for the receivers.
+ *
+ * For closed casters (every edge shared by two faces, consistently oriented)
+ * a triangle hides a sample only from its outer side: light-back-facing
+ * triangles alone cast hard shadows, and a surface never shadows itself, so
+ * no bias is needed (3.3). Open casters (planes, sheets) are tested from both
+ * sides, with their own plane moved away by 1e-5 of the sample's distance to
+ * the light so that a sample does not hide itself.
+ *
+ * Light shapes (soft): a sphere of the light's radius (default; its samples
+ * spread so that the sphere is sampled uniformly seen from every side), a disc
+ * or a rectangle facing along the light's axis, each scaled per axis by
+ * LightScale (an ellipsoid from the sphere). Directional lights sample the
+ * cone of directions of their angular radius.
+ *
+ * Needs OpenGL 4.3 compute, shader storage buffers and atomics: without them
+ * the pass reports one clear error and draws the scene without shadows.
+ * Point lights are not supported yet (reported once, drawn unshadowed).
+ * Translucent surfaces, which give no view samples, keep the framework's
+ * hard shadow-map lookup. Memory for the lists and masks is reported
+ * (GetMemoryBytes()) and bounded by MemoryLimit: a frame that would exceed it
+ * is drawn unshadowed with an error.
+ *
+ * @sa vtkSoftShadowPass vtkShadowCompute
+ */
+
+#ifndef vtkAliasFreeShadowPass_h
+#define vtkAliasFreeShadowPass_h
+
+#include "vtkSoftShadowPass.h"
+
+#include <memory> // for std::unique_ptr
+
+class VTKSOFTSHADOWSRENDERING_EXPORT vtkAliasFreeShadowPass : public vtkSoftShadowPass
+{
+public:
+  static vtkAliasFreeShadowPass* New();
+  vtkTypeMacro(vtkAliasFreeShadowPass, vtkSoftShadowPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Variants
+  {
+    Hard = 0, ///< alias-free hard shadows from the light's centre
+    Soft = 1  ///< sample-based visibility of the light's area or volume
+  };
+  ///@{
+  /**
+   * Hard or Soft (default). Soft with a light of radius 0 is Hard.
+   */
+  vtkSetClampMacro(Variant, int, Hard, Soft);
+  vtkGetMacro(Variant, int);
+  void SetVariantToHard() { this->SetVariant(Hard); }
+  void SetVariantToSoft() { this->SetVariant(Soft); }
+  ///@}
+
+  ///@{
+  /**
+   * Soft: light samples per view sample, a multiple of 32 from 32 to 1024
+   * (the paper uses 128 to 1024). Default 256.
+   */
+  void SetNumberOfLightSamples(int count);
+  vtkGetMacro(NumberOfLightSamples, int);
+  ///@}
+
+  enum LightShapes
+  {
+    Sphere = 0,   ///< a ball of the light's radius
+    Disc = 1,     ///< a disc of the radius, facing along the light's axis
+    Rectangle = 2 ///< a square of side 2 radius, facing along the axis
+  };
+  ///@{
+  /**
+   * Soft: the shape of spot lights (directional lights sample their cone of
+   * directions). Default Sphere.
+   */
+  vtkSetClampMacro(LightShape, int, Sphere, Rectangle);
+  vtkGetMacro(LightShape, int);
+  ///@}
+
+  ///@{
+  /**
+   * Soft: the shape's scale along the light's two side axes and its axis
+   * (an ellipsoid from the sphere, an ellipse or a rectangle), each at least
+   * 0.001. Default 1 1 1.
+   */
+  void SetLightScale(double x, double y, double z);
+  void SetLightScale(const double scale[3]) { this->SetLightScale(scale[0], scale[1], scale[2]); }
+  vtkGetVector3Macro(LightScale, double);
+  ///@}
+
+  ///@{
+  /**
+   * Fit the light's map to the bounds of the view samples seen through it,
+   * so that its texels spread over what the camera sees and lists stay
+   * short (section 4.3). Default on.
+   */
+  vtkSetMacro(FitToViewSamples, bool);
+  vtkGetMacro(FitToViewSamples, bool);
+  vtkBooleanMacro(FitToViewSamples, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Seed of the light samples' positions. Default 1.
+   */
+  vtkSetMacro(Seed, unsigned int);
+  vtkGetMacro(Seed, unsigned int);
+  ///@}
+
+  ///@{
+  /**
+   * Most memory, in MiB, the lists, masks and lookup tables of one frame may
+   * take; a frame that needs more is drawn unshadowed, with an error.
+   * Default 1024.
+   */
+  vtkSetClampMacro(MemoryLimit, double, 1.0, 65536.0);
+  vtkGetMacro(MemoryLimit, double);
+  ///@}
+
+  ///@{
+  /**
+   * Results of the last frame: bytes of the GPU buffers the technique holds,
+   * the view samples stored in lists (over every light), and the longest
+   * list.
+   */
+  vtkGetMacro(MemoryBytes, double);
+  vtkGetMacro(NumberOfViewSamples, vtkIdType);
+  vtkGetMacro(LongestList, int);
+  ///@}
+
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+protected:
+  vtkAliasFreeShadowPass();
+  ~vtkAliasFreeShadowPass() override;
+
+  bool RenderShadowMaps(const vtkRenderState* s) override;
+  bool RenderScreenSpace(const vtkRenderState* s) override;
+  bool UsesScreenSpace() const override { return true; }
+  std::string GetCameraPassImplementation() override;
+
+  int Variant = Soft;
+  int NumberOfLightSamples = 256;
+  int LightShape = Sphere;
+  double LightScale[3] = { 1.0, 1.0, 1.0 };
+  bool FitToViewSamples = true;
+  unsigned int Seed = 1;
+  double MemoryLimit = 1024.0;
+  double MemoryBytes = 0.0;
+  vtkIdType NumberOfViewSamples = 0;
+  int LongestList = 0;
+
+private:
+  vtkAliasFreeShadowPass(const vtkAliasFreeShadowPass&) = delete;
+  void operator=(const vtkAliasFreeShadowPass&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+  bool RenderLight(const vtkRenderState* s, int slot);
+};
+
+#endif
