@@ -145,12 +145,13 @@ void BuildTriangles(vtkPolyData* data, CasterTriangles& value)
   value.Geometry->SetInput(mesh);
 }
 
-// A unit vector's two perpendicular unit vectors.
+// The light's frame across its unit axis: e1 the world's x made
+// perpendicular to it (y when the axis is nearly x), e2 = axis x e1.
 void Basis(const glm::dvec3& axis, glm::dvec3& e1, glm::dvec3& e2)
 {
   const glm::dvec3 helper =
     std::abs(axis.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0);
-  e1 = glm::normalize(glm::cross(axis, helper));
+  e1 = glm::normalize(helper - glm::dot(helper, axis) * axis);
   e2 = glm::cross(axis, e1);
 }
 
@@ -160,6 +161,14 @@ struct LookupTable
   std::tuple<int, int, unsigned int> Key{ -1, 0, 0u }; ///< shape, samples, seed
   vtkShadowCompute::Buffer Masks;
 };
+
+// `groups` work groups in rows of at most 65535, the guaranteed limit of a
+// dispatch's dimension (the shader numbers them row by row).
+void DispatchRows(vtkShadowCompute::Program& program, unsigned int groups)
+{
+  const unsigned int row = std::min(groups, 65535u);
+  program.Dispatch(row, (groups + row - 1) / row);
+}
 
 std::string WithDefines(const std::string& source, const std::string& defines)
 {
@@ -449,7 +458,7 @@ bool vtkAliasFreeShadowPass::RenderLight(const vtkRenderState* s, int slot)
 
   const unsigned int blocks = (texels + 1023) / 1024;
   common(in.ScanBlocks, worldToClip);
-  in.ScanBlocks.Dispatch(blocks);
+  DispatchRows(in.ScanBlocks, blocks);
   vtkShadowCompute::Barrier(GL_SHADER_STORAGE_BARRIER_BIT);
   common(in.ScanTop, worldToClip);
   in.ScanTop.SetUniformi("aliasfreeTexels", static_cast<int>(blocks));
@@ -529,7 +538,7 @@ bool vtkAliasFreeShadowPass::RenderLight(const vtkRenderState* s, int slot)
       in.BuildLookup.Use(context);
       in.BuildLookup.SetUniformi("aliasfreeCells", cells);
       in.BuildLookup.SetUniformi("aliasfreeWords", words);
-      in.BuildLookup.Dispatch((cells * words + 63) / 64);
+      DispatchRows(in.BuildLookup, (cells * words + 255) / 256);
       vtkShadowCompute::Barrier(GL_SHADER_STORAGE_BARRIER_BIT);
       in.SamplesBuffer.BindStorage(Samples);
       table->Key = key;

@@ -109,7 +109,9 @@ public:
   /**
    * Soft: the shape's scale along the light's two side axes and its axis
    * (an ellipsoid from the sphere, an ellipse or a rectangle), each at least
-   * 0.001. Default 1 1 1.
+   * 0.001. The first side axis is the world's x made perpendicular to the
+   * light's axis (y when the axis is nearly along x), the second the axis
+   * crossed with it. Default 1 1 1.
    */
   void SetLightScale(double x, double y, double z);
   void SetLightScale(const double scale[3]) { this->SetLightScale(scale[0], scale[1], scale[2]); }

@@ -445,7 +445,8 @@ const std::vector<Technique>& Techniques()
           "facing along the light's axis",
           &vtkAliasFreeShadowPass::SetLightShape, &vtkAliasFreeShadowPass::GetLightShape),
         { "light_scale", ValueType::Vector3, Range::Any(),
-          "soft, spot lights: the shape's scale across the axis (x, y) and along it (z): an "
+          "soft, spot lights: the shape's scale across the axis (x: the world's x made "
+          "perpendicular to the axis, y: the axis crossed with it) and along it (z): an "
           "ellipsoid, an ellipse, a rectangle",
           [](TechniqueInstance& t, const Json& v)
           {

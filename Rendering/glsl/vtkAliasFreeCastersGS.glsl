@@ -187,9 +187,16 @@ void main()
   // hexagon and projected through v onto the far plane (the farthest view
   // sample's depth, or farther for vertices beyond it).
   float far = aliasfreeFar;
+  float farthest = -3.0e38;
   for (int i = 0; i < 3; ++i)
   {
-    far = max(far, dot(aliasfreeWorldIn[i] - aliasfreeEye, aliasfreeAxis) * 1.001);
+    float depth = dot(aliasfreeWorldIn[i] - aliasfreeEye, aliasfreeAxis);
+    far = max(far, depth * 1.001);
+    farthest = max(farthest, depth);
+  }
+  if (aliasfreeLight.w > 0.5 && farthest < -aliasfreeReach)
+  {
+    return; // wholly behind the light: between it and no view sample
   }
   vec2 points[aliasfreeMaxPoints];
   int count = 0;
@@ -286,14 +293,21 @@ void main()
   aliasfreeEdge1 = edges[1];
   aliasfreeEdge2 = edges[2];
   vec4 clips[3];
+  int behind = 0;
   for (int i = 0; i < 3; ++i)
   {
     clips[i] = aliasfreeWorldToClip * vec4(corners[i], 1.0);
-    if (clips[i].w <= 0.0)
+    behind += clips[i].w <= 0.0 ? 1 : 0;
+  }
+  if (behind > 0)
+  {
+    // Wholly behind the light's eye plane: between it and no view sample;
+    // across it: unbounded in the map.
+    if (behind < 3)
     {
-      aliasfreeEmitAll(); // crosses the light's eye plane
-      return;
+      aliasfreeEmitAll();
     }
+    return;
   }
   vec2 p0 = clips[0].xy / clips[0].w, p1 = clips[1].xy / clips[1].w, p2 = clips[2].xy / clips[2].w;
   float area = aliasfreeCross(p1 - p0, p2 - p0);

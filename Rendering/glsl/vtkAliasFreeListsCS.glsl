@@ -179,7 +179,12 @@ uint aliasfreeRead(uint i) { return aliasfreeCounts[i]; }
 void aliasfreeWrite(uint i, uint value) { aliasfreeOffsets[i] = value; }
 void main()
 {
-  uint block = gl_WorkGroupID.x;
+  // Work groups in rows of at most 65535 (the dispatch's guaranteed limit).
+  uint block = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
+  if (block * 1024u >= uint(aliasfreeTexels))
+  {
+    return;
+  }
   uint total = aliasfreeScan(block * 1024u + gl_LocalInvocationID.x * 4u, 4u, uint(aliasfreeTexels));
   if (gl_LocalInvocationID.x == 0u)
   {

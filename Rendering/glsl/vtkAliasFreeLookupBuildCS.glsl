@@ -2,7 +2,7 @@
 // 32-bit word of a cell's mask.
 // Uses: vtkAliasFreeLookup.glsl (prepended by the pass).
 
-layout(local_size_x = 64) in;
+layout(local_size_x = 256) in;
 
 layout(std430, binding = 4) readonly buffer aliasfreeLightSamplesBuffer
 {
@@ -16,7 +16,9 @@ uniform int aliasfreeCells;
 
 void main()
 {
-  int index = int(gl_GlobalInvocationID.x);
+  // Work groups in rows of at most 65535 (the dispatch's guaranteed limit).
+  int index = int((gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * 256u +
+    gl_LocalInvocationID.x);
   if (index >= aliasfreeCells * aliasfreeWords)
   {
     return;
