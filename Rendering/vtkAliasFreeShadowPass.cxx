@@ -44,9 +44,8 @@
 
 namespace
 {
-// Lookup table cells (vtkAliasFreeLookup.glsl): polar angles x azimuths,
-// times distances for spot lights.
-constexpr int LookupAngles = 32 * 128;
+// Lookup table cells (vtkAliasFreeLookup.glsl): normals, times distances.
+constexpr int LookupAngles = 64 * 64;
 constexpr int LookupDistances = 64;
 
 // Storage buffer bindings, as the shaders declare them.

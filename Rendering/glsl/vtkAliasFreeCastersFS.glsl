@@ -47,6 +47,16 @@ aliasfreePlaneMask aliasfreeSide(vec3 m, vec3 q)
   return aliasfreeFindCell(n / length, -dot(m, centre) / length);
 }
 
+bool aliasfreeEmpty(aliasfreePlaneMask m)
+{
+  return m.cell < 0 && (m.fill ^ m.flip) == 0u;
+}
+
+bool aliasfreeFull(aliasfreePlaneMask m)
+{
+  return m.cell < 0 && (m.fill ^ m.flip) == 0xffffffffu;
+}
+
 uint aliasfreeWord(aliasfreePlaneMask m, int word)
 {
   return (m.cell < 0 ? m.fill : aliasfreeLookup[m.cell * aliasfreeWords + word]) ^ m.flip;
@@ -95,25 +105,35 @@ void main()
     {
       continue;
     }
+    // The four planes' masks; none hidden as soon as one plane leaves the
+    // whole light outside (most samples of a region: the lit side), all as
+    // long as every plane holds the whole light (the umbra).
     aliasfreePlaneMask planes[4];
     planes[3] = aliasfreeSide(side > 0.0 ? -normal : normal, aliasfreeA);
-    if (planes[3].cell < 0 && (planes[3].fill ^ planes[3].flip) == 0u)
-    {
-      continue; // the whole light on p's side
-    }
-    bool cone = true;
-    for (int i = 0; i < 3 && cone; ++i)
+    bool none = aliasfreeEmpty(planes[3]);
+    bool all = aliasfreeFull(planes[3]);
+    for (int i = 0; i < 3 && !none; ++i)
     {
       vec3 q = corners[i], r = corners[(i + 1) % 3], o = corners[(i + 2) % 3];
       vec3 m = cross(q - p, r - p);
-      cone = dot(m, m) > 0.0;
+      none = dot(m, m) <= 0.0; // p on an edge's line
       planes[i] = aliasfreeSide(dot(m, o - p) >= 0.0 ? m : -m, p);
+      none = none || aliasfreeEmpty(planes[i]);
+      all = all && aliasfreeFull(planes[i]);
     }
-    if (!cone)
+    if (none)
     {
-      continue; // p on an edge's line
+      continue;
     }
     uint base = s * uint(aliasfreeWords);
+    if (all)
+    {
+      for (int w = 0; w < aliasfreeWords; ++w)
+      {
+        aliasfreeHidden[base + uint(w)] = 0xffffffffu; // whatever others OR, all stay set
+      }
+      continue;
+    }
     for (int w = 0; w < aliasfreeWords; ++w)
     {
       uint hidden = aliasfreeWord(planes[0], w) & aliasfreeWord(planes[1], w) &

@@ -93,47 +93,88 @@ bool aliasfreeViewSample(out vec3 position, out vec2 ndc, out uint why)
   return all(lessThanEqual(abs(ndc), vec2(1.0)));
 }
 
+#if defined(ALIASFREE_BOUNDS) || defined(ALIASFREE_COUNT)
+// The work group's statistics, reduced in shared memory first: one global
+// atomic per work group instead of one per sample, which all hit the same
+// few words.
+shared int aliasfreeGroupStats[7];
+
+void aliasfreeBeginStats()
+{
+  // Identities: the largest integer for minima, the smallest for maxima, 0 for sums.
+  const int identity[7] = int[7](0x7fffffff, -0x7fffffff - 1, 0x7fffffff, -0x7fffffff - 1,
+    -0x7fffffff - 1, 0, 0);
+  if (gl_LocalInvocationIndex < 7u)
+  {
+    aliasfreeGroupStats[gl_LocalInvocationIndex] = identity[gl_LocalInvocationIndex];
+  }
+  barrier();
+}
+
+void aliasfreeEndStats()
+{
+  barrier();
+  if (gl_LocalInvocationIndex == 0u)
+  {
+#ifdef ALIASFREE_BOUNDS
+    atomicMin(aliasfreeStats[0], aliasfreeGroupStats[0]);
+    atomicMax(aliasfreeStats[1], aliasfreeGroupStats[1]);
+    atomicMin(aliasfreeStats[2], aliasfreeGroupStats[2]);
+    atomicMax(aliasfreeStats[3], aliasfreeGroupStats[3]);
+    atomicMax(aliasfreeStats[4], aliasfreeGroupStats[4]);
+#else
+    atomicMax(aliasfreeStats[5], aliasfreeGroupStats[5]);
+    atomicAdd(aliasfreeStats[6], aliasfreeGroupStats[6]);
+#endif
+  }
+}
+#endif
+
 #ifdef ALIASFREE_BOUNDS
 void main()
 {
+  aliasfreeBeginStats();
   vec3 p;
   vec2 ndc;
   uint why;
-  if (!aliasfreeInScreen() || !aliasfreeViewSample(p, ndc, why))
+  if (aliasfreeInScreen() && aliasfreeViewSample(p, ndc, why))
   {
-    return;
+    atomicMin(aliasfreeGroupStats[0], aliasfreeOrdered(ndc.x));
+    atomicMax(aliasfreeGroupStats[1], aliasfreeOrdered(ndc.x));
+    atomicMin(aliasfreeGroupStats[2], aliasfreeOrdered(ndc.y));
+    atomicMax(aliasfreeGroupStats[3], aliasfreeOrdered(ndc.y));
+    atomicMax(aliasfreeGroupStats[4], aliasfreeOrdered(dot(p - aliasfreeEye, aliasfreeAxis)));
   }
-  atomicMin(aliasfreeStats[0], aliasfreeOrdered(ndc.x));
-  atomicMax(aliasfreeStats[1], aliasfreeOrdered(ndc.x));
-  atomicMin(aliasfreeStats[2], aliasfreeOrdered(ndc.y));
-  atomicMax(aliasfreeStats[3], aliasfreeOrdered(ndc.y));
-  atomicMax(aliasfreeStats[4], aliasfreeOrdered(dot(p - aliasfreeEye, aliasfreeAxis)));
+  aliasfreeEndStats();
 }
 #endif
 
 #ifdef ALIASFREE_COUNT
 void main()
 {
-  if (!aliasfreeInScreen())
-  {
-    return;
-  }
+  aliasfreeBeginStats();
   vec3 p;
   vec2 ndc;
   uint why;
   uint pixel = aliasfreePixelIndex();
-  if (!aliasfreeViewSample(p, ndc, why))
+  if (aliasfreeInScreen())
   {
-    aliasfreePixels[pixel] = uvec2(aliasfreeNone, why);
-    return;
+    if (!aliasfreeViewSample(p, ndc, why))
+    {
+      aliasfreePixels[pixel] = uvec2(aliasfreeNone, why);
+    }
+    else
+    {
+      ivec2 t = clamp(ivec2((ndc * 0.5 + 0.5) * float(aliasfreeMapSize)), ivec2(0),
+        ivec2(aliasfreeMapSize - 1));
+      uint texel = uint(t.y * aliasfreeMapSize + t.x);
+      uint index = atomicAdd(aliasfreeCounts[texel], 1u);
+      aliasfreePixels[pixel] = uvec2(texel, index);
+      atomicMax(aliasfreeGroupStats[5], int(index) + 1);
+      atomicAdd(aliasfreeGroupStats[6], 1);
+    }
   }
-  ivec2 t = clamp(ivec2((ndc * 0.5 + 0.5) * float(aliasfreeMapSize)), ivec2(0),
-    ivec2(aliasfreeMapSize - 1));
-  uint texel = uint(t.y * aliasfreeMapSize + t.x);
-  uint index = atomicAdd(aliasfreeCounts[texel], 1u);
-  aliasfreePixels[pixel] = uvec2(texel, index);
-  atomicMax(aliasfreeStats[5], int(index) + 1);
-  atomicAdd(aliasfreeStats[6], 1);
+  aliasfreeEndStats();
 }
 #endif
 

@@ -7,26 +7,26 @@
 // Only the hemisphere n.z >= 0 is stored: the opposite plane (-n, -d) reads
 // the same cell and complements it, so that the two sides of an edge shared
 // by two triangles split the samples exactly, with no crack between them.
-// Cells are uniform in the polar angle (over [0, pi/2]), the azimuth and d
-// (over [-1, 1]); the mask of a cell is that of the plane at its centre.
+// The mask of a cell is that of the plane at its centre.
 // Used by vtkAliasFreeLookupBuildCS.glsl and vtkAliasFreeCastersFS.glsl.
 
-// Polar angles and azimuths (2.8 degrees a cell), and distances (1/32 a cell).
-const ivec2 aliasfreeLookupAngles = ivec2(32, 128);
+// The hemisphere's normals by their octahedral coordinates (no
+// trigonometry): n / (|x| + |y| + z) is a point of the diamond
+// |u| + |v| <= 1, turned by 45 degrees onto a square of 64 x 64 cells (about
+// 2 degrees each); distances over [-1, 1] in 64 cells.
+const int aliasfreeLookupSide = 64;
 const int aliasfreeLookupDistances = 64;
 uniform int aliasfreeWords; // 32-bit words a mask: light samples / 32
-
-const float aliasfreePi = 3.14159265358979;
 
 // The plane at the centre of `cell`.
 void aliasfreeCellPlane(int cell, out vec3 n, out float d)
 {
-  int polar = cell % aliasfreeLookupAngles.x;
-  int azimuth = (cell / aliasfreeLookupAngles.x) % aliasfreeLookupAngles.y;
-  int distance = cell / (aliasfreeLookupAngles.x * aliasfreeLookupAngles.y);
-  float theta = (float(polar) + 0.5) / float(aliasfreeLookupAngles.x) * 0.5 * aliasfreePi;
-  float phi = (float(azimuth) + 0.5) / float(aliasfreeLookupAngles.y) * 2.0 * aliasfreePi - aliasfreePi;
-  n = vec3(sin(theta) * cos(phi), sin(theta) * sin(phi), cos(theta));
+  int column = cell % aliasfreeLookupSide;
+  int row = (cell / aliasfreeLookupSide) % aliasfreeLookupSide;
+  int distance = cell / (aliasfreeLookupSide * aliasfreeLookupSide);
+  vec2 square = (vec2(column, row) + 0.5) / float(aliasfreeLookupSide) * 2.0 - 1.0;
+  vec2 diamond = 0.5 * vec2(square.x + square.y, square.x - square.y);
+  n = normalize(vec3(diamond, 1.0 - abs(diamond.x) - abs(diamond.y)));
   d = (float(distance) + 0.5) / float(aliasfreeLookupDistances) * 2.0 - 1.0;
 }
 
@@ -53,15 +53,13 @@ aliasfreePlaneMask aliasfreeFindCell(vec3 n, float d)
   m.cell = -1;
   if (abs(d) < 1.0)
   {
-    float theta = acos(clamp(n.z, 0.0, 1.0));
-    float phi = atan(n.y, n.x);
-    int polar = min(int(theta / (0.5 * aliasfreePi) * float(aliasfreeLookupAngles.x)),
-      aliasfreeLookupAngles.x - 1);
-    int azimuth = int((phi + aliasfreePi) / (2.0 * aliasfreePi) * float(aliasfreeLookupAngles.y));
-    azimuth = clamp(azimuth, 0, aliasfreeLookupAngles.y - 1);
+    vec2 diamond = n.xy / (abs(n.x) + abs(n.y) + n.z);
+    vec2 square = vec2(diamond.x + diamond.y, diamond.x - diamond.y);
+    ivec2 at = clamp(ivec2((square * 0.5 + 0.5) * float(aliasfreeLookupSide)), ivec2(0),
+      ivec2(aliasfreeLookupSide - 1));
     int distance =
       clamp(int((d + 1.0) * 0.5 * float(aliasfreeLookupDistances)), 0, aliasfreeLookupDistances - 1);
-    m.cell = polar + aliasfreeLookupAngles.x * (azimuth + aliasfreeLookupAngles.y * distance);
+    m.cell = at.x + aliasfreeLookupSide * (at.y + aliasfreeLookupSide * distance);
   }
   return m;
 }
