@@ -16,7 +16,7 @@ import tempfile
 import numpy as np
 
 TECHNIQUES = ["hard", "reference", "reference:sphere", "contact", "contact:gaussian",
-              "contact:multipass", "omni", "silhouette", "smoothies"]
+              "contact:multipass", "omni", "silhouette", "smoothies", "aliasfree"]
 SCENES = sorted(glob.glob("Examples/Scenes/quality/*.json"))
 DOC = "docs/quality.md"
 BEGIN, END = "<!-- quality table: scripts/quality.sh -->", "<!-- end of quality table -->"
