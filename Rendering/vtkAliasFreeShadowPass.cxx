@@ -2,8 +2,13 @@
 
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkEdgeAdjacencyFilter.h"
+#include "vtkFloatArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkRenderState.h"
@@ -53,11 +58,13 @@ enum Binding : unsigned int
 {
   Counts = 0,
   Offsets = 1,
-  Blocks = 2,
+  Blocks = 2, ///< the prefix sum's; then the marks of penumbra texels
+  Marks = 2,
   Pixels = 3,
   Samples = 4,
   Hidden = 5,
-  Lookup = 6,
+  Lookup = 6, ///< the casters' draw; in the resolve, the centre's hard bits
+  Centre = 6,
   Stats = 7
 };
 
@@ -83,9 +90,77 @@ float FromOrdered(int i)
 struct CasterTriangles
 {
   std::shared_ptr<vtkShadowGeometry> Geometry;
+  std::shared_ptr<vtkShadowGeometry> Edges; ///< each edge (a, b, a, b) with its faces' normals
   bool Closed = false;
   float Orientation = 1.0f;
 };
+
+std::shared_ptr<vtkShadowGeometry> NewGeometry()
+{
+  // Released with the entry (a new polydata, or the caster gone).
+  return std::shared_ptr<vtkShadowGeometry>(new vtkShadowGeometry,
+    [](vtkShadowGeometry* geometry)
+    {
+      geometry->ReleaseGraphicsResources(nullptr);
+      delete geometry;
+    });
+}
+
+// Each edge of `mesh` as a line with adjacency (a, b, a, b) whose points
+// carry its two faces' normals: aliasfreeFace0 (w = 1 for edges that are
+// always silhouettes: borders, non-manifold or inconsistently oriented
+// ones) and aliasfreeFace1.
+vtkSmartPointer<vtkPolyData> EdgesWithFaces(vtkPolyData* mesh)
+{
+  vtkNew<vtkEdgeAdjacencyFilter> adjacency;
+  adjacency->SetInputData(mesh);
+  adjacency->Update();
+  vtkPolyData* edges = adjacency->GetOutput();
+  vtkDataArray* types = edges->GetCellData()->GetArray("EdgeType");
+  vtkDataArray* consistent = edges->GetCellData()->GetArray("ConsistentOrientation");
+  vtkDataArray* normals = edges->GetCellData()->GetArray("FaceNormals");
+  const vtkIdType count = edges->GetNumberOfLines();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToFloat();
+  points->SetNumberOfPoints(4 * count);
+  vtkNew<vtkFloatArray> face0, face1;
+  face0->SetName("aliasfreeFace0");
+  face0->SetNumberOfComponents(4);
+  face0->SetNumberOfTuples(4 * count);
+  face1->SetName("aliasfreeFace1");
+  face1->SetNumberOfComponents(3);
+  face1->SetNumberOfTuples(4 * count);
+  vtkNew<vtkCellArray> lines;
+  vtkIdType n = 0;
+  const vtkIdType* ids = nullptr;
+  vtkIdType e = 0;
+  vtkCellArray* cells = edges->GetLines();
+  for (cells->InitTraversal(); cells->GetNextCell(n, ids); ++e)
+  {
+    double f[6];
+    normals->GetTuple(e, f);
+    const bool always = types->GetComponent(e, 0) != 1.0 || consistent->GetComponent(e, 0) == 0.0;
+    const float first[4] = { static_cast<float>(f[0]), static_cast<float>(f[1]),
+      static_cast<float>(f[2]), always ? 1.0f : 0.0f };
+    const float second[3] = { static_cast<float>(f[3]), static_cast<float>(f[4]),
+      static_cast<float>(f[5]) };
+    vtkIdType line[4];
+    for (int k = 0; k < 4; ++k)
+    {
+      line[k] = 4 * e + k;
+      points->SetPoint(line[k], edges->GetPoint(ids[k % 2]));
+      face0->SetTypedTuple(line[k], first);
+      face1->SetTypedTuple(line[k], second);
+    }
+    lines->InsertNextCell(4, line);
+  }
+  auto result = vtkSmartPointer<vtkPolyData>::New();
+  result->SetPoints(points);
+  result->SetLines(lines);
+  result->GetPointData()->AddArray(face0);
+  result->GetPointData()->AddArray(face1);
+  return result;
+}
 
 void BuildTriangles(vtkPolyData* data, CasterTriangles& value)
 {
@@ -135,13 +210,11 @@ void BuildTriangles(vtkPolyData* data, CasterTriangles& value)
   }
   value.Closed = manifold && !directed.empty() && volume != 0.0;
   value.Orientation = volume < 0.0 ? -1.0f : 1.0f;
-  value.Geometry = std::shared_ptr<vtkShadowGeometry>(new vtkShadowGeometry,
-    [](vtkShadowGeometry* geometry)
-    {
-      geometry->ReleaseGraphicsResources(nullptr);
-      delete geometry;
-    });
+  value.Geometry = NewGeometry();
   value.Geometry->SetInput(mesh);
+  value.Edges = NewGeometry();
+  value.Edges->SetPrimitive(vtkShadowGeometry::Primitive::LinesAdjacency);
+  value.Edges->SetInput(EdgesWithFaces(mesh));
 }
 
 // The light's frame across its unit axis: e1 the world's x made
@@ -181,13 +254,16 @@ struct vtkAliasFreeShadowPass::Internals
   vtkShadowCompute::Program Bounds, Count, ScanBlocks, ScanTop, ScanAdd, Scatter, Resolve,
     BuildLookup;
   vtkShadowCompute::Buffer CountsBuffer, OffsetsBuffer, BlocksBuffer, PixelsBuffer, SamplesBuffer,
-    HiddenBuffer, StatsBuffer, LightSamples;
+    HiddenBuffer, StatsBuffer, LightSamples, MarksBuffer, CentreBuffer;
   std::vector<std::unique_ptr<LookupTable>> Lookups; // per light slot
   vtkSmartPointer<vtkTextureObject> Target;          // the casters' draw: a map-sized target
   std::string Vertex = WithDefines(vtkAliasFreeCastersVS, "");
   std::string HardGeometry = WithDefines(vtkAliasFreeCastersGS, "");
   std::string HardFragment = WithDefines(vtkAliasFreeCastersFS, "");
   std::string SoftGeometry = WithDefines(vtkAliasFreeCastersGS, "#define ALIASFREE_SOFT\n");
+  std::string EdgesVertex = WithDefines(vtkAliasFreeCastersVS, "#define ALIASFREE_EDGES\n");
+  std::string EdgesGeometry = WithDefines(vtkAliasFreeCastersGS, "#define ALIASFREE_EDGES\n");
+  std::string EdgesFragment = WithDefines(vtkAliasFreeCastersFS, "#define ALIASFREE_EDGES\n");
   std::string SoftFragment = WithDefines(
     std::string(vtkAliasFreeLookup) + "\n" + vtkAliasFreeCastersFS, "#define ALIASFREE_SOFT\n");
   bool Failed = false; ///< a shader did not build: reported once
@@ -560,66 +636,117 @@ bool vtkAliasFreeShadowPass::RenderLight(const vtkRenderState* s, int slot)
   }
 
   // 4. Every caster triangle over the texels it touches (its influence
-  // region, soft), testing their samples.
+  // region, soft), testing their samples. Soft, restricted to the
+  // silhouettes: first the texels of silhouette edges' influence regions
+  // are marked and the centre's hard shadow drawn; triangles then test
+  // samples of marked texels only (section 4.3).
+  const bool restrict = soft && this->RestrictToSilhouettes;
   if (samples > 0)
   {
-    vtkShadowDrawSetup setup;
-    setup.View = &fitted;
-    setup.Colours = { in.Target };
-    setup.DepthTest = false;
-    setup.Draw = vtkShadowDrawSetup::Props::None;
     const glm::mat4 clip(worldToClip);
     const glm::vec3 side0(light.Directional ? e1 : glm::dvec3(0.0)),
       side1(light.Directional ? e2 : glm::dvec3(0.0));
     const float epsilon =
       static_cast<float>(light.Directional ? 1.0e-5 * (light.Map.Far - light.Map.Near) : 1.0e-5);
-    for (const vtkShadowCaster& caster : this->Casters->GetCasters())
+    enum class Kind
     {
-      if (caster.Data->GetNumberOfPolys() + caster.Data->GetNumberOfStrips() == 0)
+      Edges,
+      Hard,
+      Soft
+    };
+    auto draw = [&](Kind kind)
+    {
+      vtkShadowDrawSetup setup;
+      setup.View = &fitted;
+      setup.Colours = { in.Target };
+      setup.DepthTest = false;
+      setup.Draw = vtkShadowDrawSetup::Props::None;
+      for (const vtkShadowCaster& caster : this->Casters->GetCasters())
       {
-        continue;
-      }
-      CasterTriangles& triangles = in.Casters.Get(caster, BuildTriangles);
-      vtkShadowGeometry* geometry = triangles.Geometry.get();
-      geometry->SetModelToWorld(caster.ModelToWorld);
-      geometry->SetShaders(in.Vertex, soft ? in.SoftFragment : in.HardFragment,
-        soft ? in.SoftGeometry : in.HardGeometry);
-      const int closed = triangles.Closed ? 1 : 0;
-      const float orientation = triangles.Orientation;
-      geometry->SetUniforms(
-        [=](vtkShaderProgram* program)
+        if (caster.Data->GetNumberOfPolys() + caster.Data->GetNumberOfStrips() == 0)
         {
-          program->SetUniformMatrix4x4(
-            "aliasfreeWorldToClip", const_cast<float*>(glm::value_ptr(clip)));
-          program->SetUniform4f("aliasfreeLight", lightUniform);
-          program->SetUniformf("aliasfreeMapSize", static_cast<float>(mapSize));
-          program->SetUniformi("aliasfreeMapTexels", mapSize);
-          program->SetUniformi("aliasfreeClosed", closed);
-          program->SetUniformf("aliasfreeOrientation", orientation);
-          program->SetUniformf("aliasfreeEpsilon", epsilon);
-          if (soft)
+          continue;
+        }
+        CasterTriangles& triangles = in.Casters.Get(caster, BuildTriangles);
+        vtkShadowGeometry* geometry =
+          kind == Kind::Edges ? triangles.Edges.get() : triangles.Geometry.get();
+        geometry->SetModelToWorld(caster.ModelToWorld);
+        if (kind == Kind::Edges)
+        {
+          geometry->SetShaders(in.EdgesVertex, in.EdgesFragment, in.EdgesGeometry);
+        }
+        else
+        {
+          geometry->SetShaders(in.Vertex, kind == Kind::Soft ? in.SoftFragment : in.HardFragment,
+            kind == Kind::Soft ? in.SoftGeometry : in.HardGeometry);
+        }
+        const int closed = triangles.Closed ? 1 : 0;
+        const float orientation = triangles.Orientation;
+        const glm::mat3 normalToWorld(
+          glm::transpose(glm::inverse(glm::dmat3(caster.ModelToWorld))));
+        geometry->SetUniforms(
+          [=](vtkShaderProgram* program)
           {
-            program->SetUniformf("aliasfreeReach", reach);
-            program->SetUniform3f("aliasfreeEye", glm::value_ptr(eye));
-            program->SetUniform3f("aliasfreeAxis", glm::value_ptr(axis));
-            program->SetUniform3f("aliasfreeSide0", glm::value_ptr(side0));
-            program->SetUniform3f("aliasfreeSide1", glm::value_ptr(side1));
-            program->SetUniformf("aliasfreeFar", far);
-            program->SetUniformMatrix3x3(
-              "aliasfreeToLight", const_cast<float*>(glm::value_ptr(toLight)));
-            program->SetUniformi("aliasfreeWords", words);
-          }
-        });
-      setup.Geometry.push_back(geometry);
-    }
-    if (!setup.Geometry.empty() && !this->Draw(s, setup))
+            program->SetUniformMatrix4x4(
+              "aliasfreeWorldToClip", const_cast<float*>(glm::value_ptr(clip)));
+            program->SetUniform4f("aliasfreeLight", lightUniform);
+            program->SetUniformf("aliasfreeMapSize", static_cast<float>(mapSize));
+            program->SetUniformi("aliasfreeMapTexels", mapSize);
+            program->SetUniformi("aliasfreeClosed", closed);
+            program->SetUniformf("aliasfreeOrientation", orientation);
+            program->SetUniformf("aliasfreeEpsilon", epsilon);
+            if (kind != Kind::Hard)
+            {
+              program->SetUniformf("aliasfreeReach", reach);
+              program->SetUniform3f("aliasfreeEye", glm::value_ptr(eye));
+              program->SetUniform3f("aliasfreeAxis", glm::value_ptr(axis));
+              program->SetUniform3f("aliasfreeSide0", glm::value_ptr(side0));
+              program->SetUniform3f("aliasfreeSide1", glm::value_ptr(side1));
+              program->SetUniformf("aliasfreeFar", far);
+            }
+            if (kind == Kind::Edges)
+            {
+              program->SetUniformMatrix3x3(
+                "aliasfreeNormalToWorld", const_cast<float*>(glm::value_ptr(normalToWorld)));
+            }
+            if (kind == Kind::Soft)
+            {
+              program->SetUniformMatrix3x3(
+                "aliasfreeToLight", const_cast<float*>(glm::value_ptr(toLight)));
+              program->SetUniformi("aliasfreeWords", words);
+              program->SetUniformi("aliasfreeRestrict", restrict ? 1 : 0);
+            }
+          });
+        setup.Geometry.push_back(geometry);
+      }
+      if (!setup.Geometry.empty() && !this->Draw(s, setup))
+      {
+        vtkErrorMacro("aliasfree: drawing the casters into the map failed (its shaders, or its "
+                      "target): drawing without shadows.");
+        in.Failed = true;
+        return false;
+      }
+      vtkShadowCompute::Barrier(GL_SHADER_STORAGE_BARRIER_BIT);
+      return true;
+    };
+    Internals::Grow(in.MarksBuffer, static_cast<size_t>(texels) * 4);
+    in.MarksBuffer.BindStorage(Marks);
+    if (restrict)
     {
-      vtkErrorMacro("aliasfree: drawing the casters into the map failed (its shaders, or its "
-                    "target): drawing without shadows.");
-      in.Failed = true;
+      in.MarksBuffer.Clear(0);
+      Internals::Grow(in.CentreBuffer, (samples / 32 + 1) * 4);
+      in.CentreBuffer.Clear(0);
+      in.CentreBuffer.BindStorage(Hidden);
+      if (!draw(Kind::Edges) || !draw(Kind::Hard))
+      {
+        return false;
+      }
+      in.HiddenBuffer.BindStorage(Hidden);
+    }
+    if (!draw(soft ? Kind::Soft : Kind::Hard))
+    {
       return false;
     }
-    vtkShadowCompute::Barrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
 
   // 5. Each pixel's visibility, for the receivers.
@@ -629,6 +756,12 @@ bool vtkAliasFreeShadowPass::RenderLight(const vtkRenderState* s, int slot)
     static_cast<float>(camera[2]) };
   common(in.Resolve, worldToClip);
   in.Resolve.SetUniformi("aliasfreeWords", words);
+  in.Resolve.SetUniformi("aliasfreeRestrict", restrict ? 1 : 0);
+  if (restrict)
+  {
+    in.MarksBuffer.BindStorage(Marks);
+    in.CentreBuffer.BindStorage(Centre);
+  }
   in.Resolve.SetUniform3f("aliasfreeCameraPosition", cameraPosition);
   vtkShadowCompute::BindImage(0, visibility, GL_WRITE_ONLY, GL_RGBA32F);
   in.Resolve.Dispatch(groupsX, groupsY);
@@ -648,7 +781,8 @@ void vtkAliasFreeShadowPass::ReleaseGraphicsResources(vtkWindow* w)
     program->Release();
   }
   for (auto* buffer : { &in.CountsBuffer, &in.OffsetsBuffer, &in.BlocksBuffer, &in.PixelsBuffer,
-         &in.SamplesBuffer, &in.HiddenBuffer, &in.StatsBuffer, &in.LightSamples })
+         &in.SamplesBuffer, &in.HiddenBuffer, &in.StatsBuffer, &in.LightSamples, &in.MarksBuffer,
+         &in.CentreBuffer })
   {
     buffer->Release();
   }
@@ -672,6 +806,7 @@ void vtkAliasFreeShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LightScale: " << this->LightScale[0] << " " << this->LightScale[1] << " "
      << this->LightScale[2] << "\n";
   os << indent << "FitToViewSamples: " << this->FitToViewSamples << "\n";
+  os << indent << "RestrictToSilhouettes: " << this->RestrictToSilhouettes << "\n";
   os << indent << "Seed: " << this->Seed << "\n";
   os << indent << "MemoryLimit: " << this->MemoryLimit << "\n";
   os << indent << "MemoryBytes: " << this->MemoryBytes << "\n";

@@ -131,6 +131,18 @@ public:
 
   ///@{
   /**
+   * Soft: test light samples only in the texels of the influence regions of
+   * edges that are silhouettes for some point of the light (section 4.3);
+   * every other view sample sees all of the light or none of it, and takes
+   * the hard shadow of its centre. Default on.
+   */
+  vtkSetMacro(RestrictToSilhouettes, bool);
+  vtkGetMacro(RestrictToSilhouettes, bool);
+  vtkBooleanMacro(RestrictToSilhouettes, bool);
+  ///@}
+
+  ///@{
+  /**
    * Seed of the light samples' positions. Default 1.
    */
   vtkSetMacro(Seed, unsigned int);
@@ -174,6 +186,7 @@ protected:
   int LightShape = Sphere;
   double LightScale[3] = { 1.0, 1.0, 1.0 };
   bool FitToViewSamples = true;
+  bool RestrictToSilhouettes = true;
   unsigned int Seed = 1;
   double MemoryLimit = 1024.0;
   double MemoryBytes = 0.0;

@@ -462,6 +462,12 @@ const std::vector<Technique>& Techniques()
           "fit each light's map to the view samples it sees",
           &vtkAliasFreeShadowPass::SetFitToViewSamples,
           &vtkAliasFreeShadowPass::GetFitToViewSamples),
+        Bind<vtkAliasFreeShadowPass, bool>("restrict_to_silhouettes", ValueType::Boolean,
+          Range::Any(),
+          "soft: test light samples only where silhouette edges cast penumbrae; elsewhere the "
+          "light's centre decides",
+          &vtkAliasFreeShadowPass::SetRestrictToSilhouettes,
+          &vtkAliasFreeShadowPass::GetRestrictToSilhouettes),
         Bind<vtkAliasFreeShadowPass, double>("memory_limit", ValueType::Number,
           Range::Between(1.0, 65536.0),
           "MiB the lists, masks and tables may take; a frame needing more is drawn unshadowed",

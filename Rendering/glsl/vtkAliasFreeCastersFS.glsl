@@ -8,6 +8,8 @@
 //   and behind the triangle; each plane's bitmask comes from the lookup
 //   table (vtkAliasFreeLookup.glsl), the four are ANDed and ORed into p's
 //   mask.
+// With ALIASFREE_EDGES it only marks the texels of silhouette edges'
+// influence regions (vtkAliasFreeCastersGS.glsl) that hold samples.
 // Closed casters hide a sample only from their outer side, with no offset at
 // all (hard); open ones from both, except samples within aliasfreeEpsilon of
 // their plane: their own surface.
@@ -20,6 +22,10 @@ layout(std430, binding = 4) readonly buffer aliasfreeSamplesBuffer { vec4 aliasf
 layout(std430, binding = 5) coherent buffer aliasfreeHiddenBuffer { uint aliasfreeHidden[]; };
 
 uniform int aliasfreeMapTexels; // texels a side
+// Texels in the influence region of a silhouette edge (ALIASFREE_EDGES
+// writes them; soft tests only there when aliasfreeRestrict is 1).
+layout(std430, binding = 2) buffer aliasfreeMarksBuffer { uint aliasfreeMarks[]; };
+uniform int aliasfreeRestrict;
 uniform int aliasfreeClosed;
 uniform float aliasfreeOrientation;
 uniform float aliasfreeEpsilon;
@@ -89,6 +95,16 @@ void main()
   {
     return;
   }
+#ifdef ALIASFREE_EDGES
+  aliasfreeMarks[index] = 1u;
+  return;
+#endif
+#ifdef ALIASFREE_SOFT
+  if (aliasfreeRestrict == 1 && aliasfreeMarks[index] == 0u)
+  {
+    return; // no penumbra here: the centre's hard shadow holds
+  }
+#endif
   uint first = aliasfreeOffsets[index];
 #ifdef ALIASFREE_SOFT
   vec3 normal = normalize(cross(aliasfreeB - aliasfreeA, aliasfreeC - aliasfreeA));

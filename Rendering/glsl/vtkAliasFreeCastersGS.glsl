@@ -6,13 +6,26 @@
 // (their Minkowski sum: each vertex of the region becomes the square's
 // corners between its two edges' outward normals), so that a texel is drawn
 // exactly when the region touches it; then a triangle fan as a strip.
+// With ALIASFREE_EDGES, an edge that is a silhouette for some point of the
+// light (section 4.3: the light not wholly on one side of both its faces;
+// borders and other odd edges always) covers its influence region, where
+// the penumbrae lie: the texels outside every such region take the hard
+// shadow of the light's centre.
 // Uses: vtkAliasFreeCastersVS.glsl (its output), vtkAliasFreeCastersFS.glsl.
 
+#ifdef ALIASFREE_EDGES
+layout(lines_adjacency) in; // an edge a, b (and two unused vertices)
+layout(triangle_strip, max_vertices = 16) out;
+in vec4 aliasfreeFace0In[]; // its faces' normals (model); w = 1: always a silhouette
+in vec3 aliasfreeFace1In[];
+uniform mat3 aliasfreeNormalToWorld;
+#else
 layout(triangles) in;
 #ifdef ALIASFREE_SOFT
 layout(triangle_strip, max_vertices = 22) out;
 #else
 layout(triangle_strip, max_vertices = 9) out;
+#endif
 #endif
 
 in vec3 aliasfreeWorldIn[];
@@ -22,7 +35,7 @@ uniform vec4 aliasfreeLight;       // world position (w = 1), or direction towar
 uniform float aliasfreeMapSize;
 uniform int aliasfreeClosed;       // 1: the caster is closed, with outward normals...
 uniform float aliasfreeOrientation; // ... along +cross(b - a, c - a) (1) or against it (-1)
-#ifdef ALIASFREE_SOFT
+#if defined(ALIASFREE_SOFT) || defined(ALIASFREE_EDGES)
 uniform float aliasfreeReach;  // the light's bounding sphere (world), or tan(angular radius)
 uniform vec3 aliasfreeEye;      // the map's eye and axis
 uniform vec3 aliasfreeAxis;
@@ -154,11 +167,128 @@ void aliasfreeHull(vec2 points[aliasfreeMaxPoints], int count)
   } while (current != start && aliasfreeRegionSize < aliasfreeMaxPoints);
 }
 
+#if defined(ALIASFREE_SOFT) || defined(ALIASFREE_EDGES)
+// The influence region of the first n input vertices into aliasfreeRegion:
+// 1 if bounded, 0 if empty, -1 if unbounded (the whole map).
+int aliasfreeInfluence(int n)
+{
+  // Section 4.1: from each vertex v, the light's silhouette bounded by a
+  // hexagon and projected through v onto the far plane (the farthest view
+  // sample's depth, or farther for vertices beyond it).
+  float far = aliasfreeFar;
+  float farthest = -3.0e38;
+  for (int i = 0; i < n; ++i)
+  {
+    float depth = dot(aliasfreeWorldIn[i] - aliasfreeEye, aliasfreeAxis);
+    far = max(far, depth * 1.001);
+    farthest = max(farthest, depth);
+  }
+  if (aliasfreeLight.w > 0.5 && farthest < -aliasfreeReach)
+  {
+    return 0; // wholly behind the light: between it and no view sample
+  }
+  vec2 points[aliasfreeMaxPoints];
+  int count = 0;
+  for (int i = 0; i < n; ++i)
+  {
+    vec3 v = aliasfreeWorldIn[i];
+    float depth = dot(v - aliasfreeEye, aliasfreeAxis);
+    vec3 centre, side0, side1;
+    float reach;
+    if (aliasfreeLight.w > 0.5)
+    {
+      // The sphere seen from v: a circle of radius R sqrt(1 - R^2 / D^2),
+      // R^2 / D nearer v than the sphere's centre, across v -> centre.
+      vec3 toLight = aliasfreeLight.xyz - v;
+      float D = length(toLight);
+      if (D <= aliasfreeReach * 1.001)
+      {
+        return -1;
+      }
+      vec3 u = toLight / D;
+      centre = aliasfreeLight.xyz - u * (aliasfreeReach * aliasfreeReach / D);
+      reach = aliasfreeReach * sqrt(max(1.0 - aliasfreeReach * aliasfreeReach / (D * D), 0.0)) /
+        cos(aliasfreePiOver6);
+      side0 = normalize(abs(u.x) < 0.9 ? cross(u, vec3(1.0, 0.0, 0.0)) : cross(u, vec3(0.0, 1.0, 0.0)));
+      side1 = cross(u, side0);
+      for (int k = 0; k < 6; ++k)
+      {
+        float angle = float(k) * 2.0 * aliasfreePiOver6;
+        vec3 h = centre + reach * (cos(angle) * side0 + sin(angle) * side1);
+        float hd = dot(h - aliasfreeEye, aliasfreeAxis);
+        if (depth <= hd + 1.0e-6 * abs(depth))
+        {
+          return -1; // v beside or before the light: no bound
+        }
+        vec3 x = h + (v - h) * ((far - hd) / (depth - hd));
+        vec4 clip = aliasfreeWorldToClip * vec4(x, 1.0);
+        if (clip.w <= 0.0)
+        {
+          return -1;
+        }
+        points[count++] = clip.xy / clip.w;
+      }
+    }
+    else
+    {
+      // Directional: v moved to the far plane along the cone's directions,
+      // a circle of radius (far - depth) tan(angular radius) across the axis.
+      reach = max(far - depth, 0.0) * aliasfreeReach / cos(aliasfreePiOver6);
+      centre = v + max(far - depth, 0.0) * aliasfreeAxis;
+      for (int k = 0; k < 6; ++k)
+      {
+        float angle = float(k) * 2.0 * aliasfreePiOver6;
+        vec3 x = centre + reach * (cos(angle) * aliasfreeSide0 + sin(angle) * aliasfreeSide1);
+        vec4 clip = aliasfreeWorldToClip * vec4(x, 1.0);
+        points[count++] = clip.xy / clip.w;
+      }
+    }
+  }
+  aliasfreeHull(points, count);
+  return aliasfreeRegionSize < 3 ? 0 : 1;
+}
+#endif
+
 vec3 aliasfreeTowardsLight(vec3 p)
 {
   return aliasfreeLight.w > 0.5 ? aliasfreeLight.xyz - p : aliasfreeLight.xyz;
 }
 
+#ifdef ALIASFREE_EDGES
+// Where the light's centre lies from a face's plane, in units of the
+// light's reach: beyond 1 the whole light is in front, below -1 behind.
+float aliasfreeSideOf(vec3 n, vec3 p)
+{
+  return aliasfreeLight.w > 0.5
+    ? dot(n, aliasfreeLight.xyz - p) / aliasfreeReach
+    : dot(n, normalize(aliasfreeLight.xyz)) * sqrt(1.0 + aliasfreeReach * aliasfreeReach) / aliasfreeReach;
+}
+
+void main()
+{
+  vec3 a = aliasfreeWorldIn[0];
+  vec4 face0 = aliasfreeFace0In[0];
+  vec3 n0 = aliasfreeNormalToWorld * face0.xyz;
+  vec3 n1 = aliasfreeNormalToWorld * aliasfreeFace1In[0];
+  if (face0.w < 0.5 && dot(n0, n0) > 0.0 && dot(n1, n1) > 0.0)
+  {
+    float s0 = aliasfreeSideOf(normalize(n0), a), s1 = aliasfreeSideOf(normalize(n1), a);
+    if ((s0 > 1.0 && s1 > 1.0) || (s0 < -1.0 && s1 < -1.0))
+    {
+      return; // a silhouette for no point of the light
+    }
+  }
+  int region = aliasfreeInfluence(2);
+  if (region < 0)
+  {
+    aliasfreeEmitAll();
+  }
+  else if (region > 0)
+  {
+    aliasfreeEmitGrown();
+  }
+}
+#else
 void main()
 {
   vec3 a = aliasfreeWorldIn[0], b = aliasfreeWorldIn[1], c = aliasfreeWorldIn[2];
@@ -183,88 +313,15 @@ void main()
       return;
     }
   }
-  // Section 4.1: from each vertex v, the light's silhouette bounded by a
-  // hexagon and projected through v onto the far plane (the farthest view
-  // sample's depth, or farther for vertices beyond it).
-  float far = aliasfreeFar;
-  float farthest = -3.0e38;
-  for (int i = 0; i < 3; ++i)
+  int region = aliasfreeInfluence(3);
+  if (region < 0)
   {
-    float depth = dot(aliasfreeWorldIn[i] - aliasfreeEye, aliasfreeAxis);
-    far = max(far, depth * 1.001);
-    farthest = max(farthest, depth);
+    aliasfreeEmitAll();
   }
-  if (aliasfreeLight.w > 0.5 && farthest < -aliasfreeReach)
+  else if (region > 0)
   {
-    return; // wholly behind the light: between it and no view sample
+    aliasfreeEmitGrown();
   }
-  vec2 points[aliasfreeMaxPoints];
-  int count = 0;
-  for (int i = 0; i < 3; ++i)
-  {
-    vec3 v = aliasfreeWorldIn[i];
-    float depth = dot(v - aliasfreeEye, aliasfreeAxis);
-    vec3 centre, side0, side1;
-    float reach;
-    vec3 hexagon[6];
-    if (aliasfreeLight.w > 0.5)
-    {
-      // The sphere seen from v: a circle of radius R sqrt(1 - R^2 / D^2),
-      // R^2 / D nearer v than the sphere's centre, across v -> centre.
-      vec3 toLight = aliasfreeLight.xyz - v;
-      float D = length(toLight);
-      if (D <= aliasfreeReach * 1.001)
-      {
-        aliasfreeEmitAll();
-        return;
-      }
-      vec3 u = toLight / D;
-      centre = aliasfreeLight.xyz - u * (aliasfreeReach * aliasfreeReach / D);
-      reach = aliasfreeReach * sqrt(max(1.0 - aliasfreeReach * aliasfreeReach / (D * D), 0.0)) /
-        cos(aliasfreePiOver6);
-      side0 = normalize(abs(u.x) < 0.9 ? cross(u, vec3(1.0, 0.0, 0.0)) : cross(u, vec3(0.0, 1.0, 0.0)));
-      side1 = cross(u, side0);
-      for (int k = 0; k < 6; ++k)
-      {
-        float angle = float(k) * 2.0 * aliasfreePiOver6;
-        vec3 h = centre + reach * (cos(angle) * side0 + sin(angle) * side1);
-        float hd = dot(h - aliasfreeEye, aliasfreeAxis);
-        if (depth <= hd + 1.0e-6 * abs(depth))
-        {
-          aliasfreeEmitAll(); // v beside or before the light: no bound
-          return;
-        }
-        vec3 x = h + (v - h) * ((far - hd) / (depth - hd));
-        vec4 clip = aliasfreeWorldToClip * vec4(x, 1.0);
-        if (clip.w <= 0.0)
-        {
-          aliasfreeEmitAll();
-          return;
-        }
-        points[count++] = clip.xy / clip.w;
-      }
-    }
-    else
-    {
-      // Directional: v moved to the far plane along the cone's directions,
-      // a circle of radius (far - depth) tan(angular radius) across the axis.
-      reach = max(far - depth, 0.0) * aliasfreeReach / cos(aliasfreePiOver6);
-      centre = v + max(far - depth, 0.0) * aliasfreeAxis;
-      for (int k = 0; k < 6; ++k)
-      {
-        float angle = float(k) * 2.0 * aliasfreePiOver6;
-        vec3 x = centre + reach * (cos(angle) * aliasfreeSide0 + sin(angle) * aliasfreeSide1);
-        vec4 clip = aliasfreeWorldToClip * vec4(x, 1.0);
-        points[count++] = clip.xy / clip.w;
-      }
-    }
-  }
-  aliasfreeHull(points, count);
-  if (aliasfreeRegionSize < 3)
-  {
-    return;
-  }
-  aliasfreeEmitGrown();
 #else
   // Closed casters: light-back-facing triangles alone (section 3.3).
   if (aliasfreeClosed == 1 && aliasfreeOrientation * facing > 0.0)
@@ -322,3 +379,4 @@ void main()
   aliasfreeEmitGrown();
 #endif
 }
+#endif

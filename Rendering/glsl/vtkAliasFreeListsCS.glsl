@@ -23,7 +23,9 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(std430, binding = 0) buffer aliasfreeCountsBuffer { uint aliasfreeCounts[]; };
 layout(std430, binding = 1) buffer aliasfreeOffsetsBuffer { uint aliasfreeOffsets[]; };
+#ifndef ALIASFREE_RESOLVE
 layout(std430, binding = 2) buffer aliasfreeBlocksBuffer { uint aliasfreeBlocks[]; };
+#endif
 // Per pixel: x = its texel (or aliasfreeNone) and y = its index in the
 // texel's list, then in the global array; without a sample, y says why.
 layout(std430, binding = 3) buffer aliasfreePixelsBuffer { uvec2 aliasfreePixels[]; };
@@ -279,6 +281,9 @@ void main()
 
 #ifdef ALIASFREE_RESOLVE
 uniform int aliasfreeWords;           // 0: hard, one bit a sample; else words a mask
+uniform int aliasfreeRestrict;        // soft: 1 where only marked texels hold masks
+layout(std430, binding = 2) readonly buffer aliasfreeMarksBuffer { uint aliasfreeMarks[]; };
+layout(std430, binding = 6) readonly buffer aliasfreeCentreBuffer { uint aliasfreeCentre[]; };
 uniform vec3 aliasfreeCameraPosition;
 layout(rgba32f, binding = 0) writeonly uniform image2D aliasfreeVisibility;
 
@@ -298,6 +303,11 @@ void main()
     if (aliasfreeWords == 0)
     {
       visibility = float(1u - ((aliasfreeHidden[slot >> 5] >> (slot & 31u)) & 1u));
+    }
+    else if (aliasfreeRestrict == 1 && aliasfreeMarks[entry.x] == 0u)
+    {
+      // Outside every silhouette edge's influence: all of the light or none.
+      visibility = float(1u - ((aliasfreeCentre[slot >> 5] >> (slot & 31u)) & 1u));
     }
     else
     {

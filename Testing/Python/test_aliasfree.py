@@ -130,6 +130,16 @@ st.check(max(errors.values()) < 0.015 and errors[1024] <= errors[128],
          "128 to 1024 light samples all within 0.015 of the truth, 1024 no worse than 128 (%s)"
          % {k: round(v, 4) for k, v in errors.items()})
 
+# Penumbra work restricted to the silhouette edges' influence regions, or
+# done everywhere: the same shadows (the fence: borders and thin slats).
+for name, scene in (("ball", st.ball_scene(height=1.0, light_radius=0.4, technique="aliasfree",
+                                           size=SIZE)), ("fence", fence_scene())):
+    restricted, _ = st.shadow_only(scene)
+    everywhere, _ = st.shadow_only(with_map(scene, 1024, {"restrict_to_silhouettes": False}))
+    differ = float((np.abs(restricted - everywhere) > 1.5 / 255.0).mean())
+    st.check(differ < 0.0005, "%s: penumbrae restricted to the silhouettes as computed "
+             "everywhere (%.3f%% of pixels differ)" % (name, 100 * differ))
+
 # 3. The penumbra widens as the ball rises.
 widths = []
 for height in (0.75, 1.5, 2.25):
