@@ -56,15 +56,15 @@ constexpr int LookupDistances = 64;
 // Storage buffer bindings, as the shaders declare them.
 enum Binding : unsigned int
 {
-  Counts = 0,
+  Counts = 0, ///< in the resolve, the centre's hard bits
+  Centre = 0,
   Offsets = 1,
   Blocks = 2, ///< the prefix sum's; then the marks of penumbra texels
   Marks = 2,
   Pixels = 3,
   Samples = 4,
   Hidden = 5,
-  Lookup = 6, ///< the casters' draw; in the resolve, the centre's hard bits
-  Centre = 6,
+  Lookup = 6,
   Stats = 7
 };
 
@@ -275,11 +275,11 @@ struct vtkAliasFreeShadowPass::Internals
     {
       return true;
     }
-    const std::pair<vtkShadowCompute::Program*, const char*> lists[] = { { &this->Bounds,
-                                                                           "ALIASFREE_BOUNDS" },
-      { &this->Count, "ALIASFREE_COUNT" }, { &this->ScanBlocks, "ALIASFREE_SCAN_BLOCKS" },
-      { &this->ScanTop, "ALIASFREE_SCAN_TOP" }, { &this->ScanAdd, "ALIASFREE_SCAN_ADD" },
-      { &this->Scatter, "ALIASFREE_SCATTER" }, { &this->Resolve, "ALIASFREE_RESOLVE" } };
+    const std::pair<vtkShadowCompute::Program*, const char*> lists[] = {
+      { &this->Bounds, "ALIASFREE_BOUNDS" }, { &this->Count, "ALIASFREE_COUNT" },
+      { &this->ScanBlocks, "ALIASFREE_SCAN_BLOCKS" }, { &this->ScanTop, "ALIASFREE_SCAN_TOP" },
+      { &this->ScanAdd, "ALIASFREE_SCAN_ADD" }, { &this->Scatter, "ALIASFREE_SCATTER" }
+    };
     std::string log;
     for (const auto& program : lists)
     {
@@ -292,8 +292,18 @@ struct vtkAliasFreeShadowPass::Internals
         return false;
       }
     }
+    if (!this->Resolve.Build(
+          WithDefines(std::string(vtkAliasFreeLookup) + "\n" + vtkAliasFreeListsCS,
+            "#define ALIASFREE_RESOLVE\n"),
+          &log))
+    {
+      vtkErrorWithObjectMacro(
+        pass, "aliasfree: the ALIASFREE_RESOLVE compute shader did not build: " << log);
+      return false;
+    }
     if (!this->BuildLookup.Build(
-          WithDefines(std::string(vtkAliasFreeLookup) + "\n" + vtkAliasFreeLookupBuildCS, ""),
+          WithDefines(std::string(vtkAliasFreeLookup) + "\n" + vtkAliasFreeLookupBuildCS,
+            "#define ALIASFREE_LOOKUP_BUILD\n"),
           &log))
     {
       vtkErrorWithObjectMacro(
@@ -382,9 +392,10 @@ bool vtkAliasFreeShadowPass::RenderScreenSpace(const vtkRenderState* s)
   const size_t words = soft ? static_cast<size_t>(this->NumberOfLightSamples / 32) : 0;
 
   // Memory, before anything is allocated: the camera pass's two targets,
-  // per pixel its entry and (at most) its sample and mask, per texel its
-  // count and offset (and the draw's target), the lookup tables.
-  double bytes = pixels * (2 * 16 + 8 + 16 + (soft ? 4 * words : 0.125)) + texels * (4 + 4 + 1) +
+  // per pixel its entry and (at most) its sample, hidden bit and mask, per
+  // texel its count, offset and mark (and the draw's target), the lookup
+  // tables.
+  double bytes = pixels * (2 * 16 + 8 + 16 + 0.125 + 4.0 * words) + texels * (4 + 4 + 4 + 1) +
     (texels / 1024 + 1) * 4.0;
   for (const auto& light : lights)
   {
@@ -448,6 +459,27 @@ bool vtkAliasFreeShadowPass::RenderScreenSpace(const vtkRenderState* s)
 //------------------------------------------------------------------------------
 bool vtkAliasFreeShadowPass::RenderLight(const vtkRenderState* s, int slot)
 {
+  // A point light: each of its six cube faces in turn, with its own lists;
+  // each face's resolve writes the pixels whose samples it listed.
+  const auto& light = this->Maps->GetLights()[slot];
+  if (!light.Point)
+  {
+    return this->RenderFrustum(s, slot, light.Map, true);
+  }
+  for (int face = 0; face < 6; ++face)
+  {
+    if (!this->RenderFrustum(s, slot, light.Faces[face], face == 0))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAliasFreeShadowPass::RenderFrustum(
+  const vtkRenderState* s, int slot, const vtkShadowFrustum& view, bool first)
+{
   auto* context = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
   Internals& in = *this->Internal;
   const auto& light = this->Maps->GetLights()[slot];
@@ -459,11 +491,25 @@ bool vtkAliasFreeShadowPass::RenderLight(const vtkRenderState* s, int slot)
   vtkTextureObject* positions = this->Screen->GetTexture("aliasfree.positions", 4);
   vtkTextureObject* normals = this->Screen->GetTexture("aliasfree.normals", 4);
 
-  const glm::dvec3 towards = light.Directional ? -light.Map.Direction : light.Position;
+  const glm::dvec3 towards = light.Directional ? -view.Direction : light.Position;
   const float lightUniform[4] = { static_cast<float>(towards.x), static_cast<float>(towards.y),
     static_cast<float>(towards.z), light.Directional ? 0.0f : 1.0f };
-  const glm::vec3 eye(light.Map.Eye), axis(light.Map.Direction);
+  const glm::vec3 eye(view.Eye), axis(view.Direction);
   const unsigned int groupsX = (width + 7) / 8, groupsY = (height + 7) / 8;
+  // Soft: the light's reach, its bounding sphere's radius (spot and point
+  // lights) or the tangent of its angular radius (directional), and how far
+  // a face may turn from its centre and still see some of it.
+  const double* scale = this->LightScale;
+  const double spread = light.Directional ? std::tan(glm::radians(light.Radius)) : 0.0;
+  const float reach = !soft
+    ? 0.0f
+    : static_cast<float>(light.Directional ? spread
+                                           : light.Radius *
+            (this->LightShape == Sphere    ? std::max({ scale[0], scale[1], scale[2] })
+                : this->LightShape == Disc ? std::max(scale[0], scale[1])
+                                           : std::sqrt(scale[0] * scale[0] + scale[1] * scale[1])));
+  const float slack =
+    light.Directional ? static_cast<float>(std::sin(std::atan(static_cast<double>(reach)))) : reach;
   auto common = [&](vtkShadowCompute::Program& program, const glm::dmat4& worldToClip)
   {
     program.Use(context);
@@ -477,6 +523,7 @@ bool vtkAliasFreeShadowPass::RenderLight(const vtkRenderState* s, int slot)
     program.SetUniform4f("aliasfreeLight", lightUniform);
     program.SetUniform3f("aliasfreeEye", glm::value_ptr(eye));
     program.SetUniform3f("aliasfreeAxis", glm::value_ptr(axis));
+    program.SetUniformf("aliasfreeFacingSlack", slack);
   };
   in.CountsBuffer.BindStorage(Counts);
   in.OffsetsBuffer.BindStorage(Offsets);
@@ -489,14 +536,14 @@ bool vtkAliasFreeShadowPass::RenderLight(const vtkRenderState* s, int slot)
     Ordered(-VTK_FLOAT_MAX), 0, 0, 0 };
   in.StatsBuffer.Allocate(sizeof initial, initial);
   in.StatsBuffer.BindStorage(Stats);
-  const glm::dmat4 lightToClip = light.Map.Projection * light.Map.View;
+  const glm::dmat4 lightToClip = view.Projection * view.View;
   common(in.Bounds, lightToClip);
   in.Bounds.Dispatch(groupsX, groupsY);
   vtkShadowCompute::Barrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   int stats[8];
   in.StatsBuffer.Read(stats, sizeof stats);
-  vtkShadowFrustum fitted = light.Map;
-  const float far = std::max(FromOrdered(stats[4]), static_cast<float>(light.Map.Near));
+  vtkShadowFrustum fitted = view;
+  const float far = std::max(FromOrdered(stats[4]), static_cast<float>(view.Near));
   if (this->FitToViewSamples && stats[0] <= stats[1])
   {
     // Crop the clip space to the bounds, two texels wider on each side.
@@ -513,7 +560,7 @@ bool vtkAliasFreeShadowPass::RenderLight(const vtkRenderState* s, int slot)
     crop[1][1] = 2.0 / (y1 - y0);
     crop[3][0] = -(x0 + x1) / (x1 - x0);
     crop[3][1] = -(y0 + y1) / (y1 - y0);
-    fitted.Projection = crop * light.Map.Projection;
+    fitted.Projection = crop * view.Projection;
     fitted.WorldToMap = glm::translate(glm::dmat4(1.0), glm::dvec3(0.5)) *
       glm::scale(glm::dmat4(1.0), glm::dvec3(0.5)) * fitted.Projection * fitted.View;
   }
@@ -554,12 +601,9 @@ bool vtkAliasFreeShadowPass::RenderLight(const vtkRenderState* s, int slot)
 
   // The light's samples and lookup table (soft), built when they change.
   glm::dvec3 e1, e2;
-  Basis(light.Directional ? -light.Map.Direction : light.Direction, e1, e2);
-  const glm::dvec3 e3 = light.Directional ? -light.Map.Direction : light.Direction;
-  const double spread = light.Directional ? std::tan(glm::radians(light.Radius)) : 0.0;
-  const double* scale = this->LightScale;
+  Basis(light.Directional ? -view.Direction : light.Direction, e1, e2);
+  const glm::dvec3 e3 = light.Directional ? -view.Direction : light.Direction;
   glm::mat3 toLight(1.0f);
-  float reach = 0.0f;
   if (soft)
   {
     auto& table = in.Lookups[slot];
@@ -628,11 +672,6 @@ bool vtkAliasFreeShadowPass::RenderLight(const vtkRenderState* s, int slot)
     const glm::dmat3 shape(
       glm::dvec3(size.x, 0.0, 0.0), glm::dvec3(0.0, size.y, 0.0), glm::dvec3(0.0, 0.0, size.z));
     toLight = glm::mat3(shape * glm::transpose(frame));
-    reach = static_cast<float>(light.Directional ? spread
-                                                 : light.Radius *
-          (this->LightShape == Sphere    ? std::max({ scale[0], scale[1], scale[2] })
-              : this->LightShape == Disc ? std::max(scale[0], scale[1])
-                                         : std::sqrt(scale[0] * scale[0] + scale[1] * scale[1])));
   }
 
   // 4. Every caster triangle over the texels it touches (its influence
@@ -647,7 +686,7 @@ bool vtkAliasFreeShadowPass::RenderLight(const vtkRenderState* s, int slot)
     const glm::vec3 side0(light.Directional ? e1 : glm::dvec3(0.0)),
       side1(light.Directional ? e2 : glm::dvec3(0.0));
     const float epsilon =
-      static_cast<float>(light.Directional ? 1.0e-5 * (light.Map.Far - light.Map.Near) : 1.0e-5);
+      static_cast<float>(light.Directional ? 1.0e-5 * (view.Far - view.Near) : 1.0e-5);
     enum class Kind
     {
       Edges,
@@ -757,6 +796,12 @@ bool vtkAliasFreeShadowPass::RenderLight(const vtkRenderState* s, int slot)
   common(in.Resolve, worldToClip);
   in.Resolve.SetUniformi("aliasfreeWords", words);
   in.Resolve.SetUniformi("aliasfreeRestrict", restrict ? 1 : 0);
+  in.Resolve.SetUniformi("aliasfreeListedOnly", first ? 0 : 1);
+  in.Resolve.SetUniformMatrix3f("aliasfreeToLight", glm::value_ptr(toLight));
+  if (soft)
+  {
+    in.Lookups[slot]->Masks.BindStorage(Lookup);
+  }
   if (restrict)
   {
     in.MarksBuffer.BindStorage(Marks);
@@ -780,9 +825,9 @@ void vtkAliasFreeShadowPass::ReleaseGraphicsResources(vtkWindow* w)
   {
     program->Release();
   }
-  for (auto* buffer : { &in.CountsBuffer, &in.OffsetsBuffer, &in.BlocksBuffer, &in.PixelsBuffer,
-         &in.SamplesBuffer, &in.HiddenBuffer, &in.StatsBuffer, &in.LightSamples, &in.MarksBuffer,
-         &in.CentreBuffer })
+  for (auto* buffer :
+    { &in.CountsBuffer, &in.OffsetsBuffer, &in.BlocksBuffer, &in.PixelsBuffer, &in.SamplesBuffer,
+      &in.HiddenBuffer, &in.StatsBuffer, &in.LightSamples, &in.MarksBuffer, &in.CentreBuffer })
   {
     buffer->Release();
   }

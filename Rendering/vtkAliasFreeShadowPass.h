@@ -43,7 +43,7 @@
  *
  * Needs OpenGL 4.3 compute, shader storage buffers and atomics: without them
  * the pass reports one clear error and draws the scene without shadows.
- * Point lights are not supported yet (reported once, drawn unshadowed).
+ * Point lights take their six cube faces in turn, each with its own lists.
  * Translucent surfaces, which give no view samples, keep the framework's
  * hard shadow-map lookup. Memory for the lists and masks is reported
  * (GetMemoryBytes()) and bounded by MemoryLimit: a frame that would exceed it
@@ -180,6 +180,7 @@ protected:
   bool RenderScreenSpace(const vtkRenderState* s) override;
   bool UsesScreenSpace() const override { return true; }
   std::string GetCameraPassImplementation() override;
+  bool SupportsPointLights() const override { return true; }
 
   int Variant = Soft;
   int NumberOfLightSamples = 256;
@@ -200,6 +201,7 @@ private:
   struct Internals;
   std::unique_ptr<Internals> Internal;
   bool RenderLight(const vtkRenderState* s, int slot);
+  bool RenderFrustum(const vtkRenderState* s, int slot, const vtkShadowFrustum& view, bool first);
 };
 
 #endif

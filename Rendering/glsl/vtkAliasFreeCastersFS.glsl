@@ -10,9 +10,10 @@
 //   mask.
 // With ALIASFREE_EDGES it only marks the texels of silhouette edges'
 // influence regions (vtkAliasFreeCastersGS.glsl) that hold samples.
-// Closed casters hide a sample only from their outer side, with no offset at
-// all (hard); open ones from both, except samples within aliasfreeEpsilon of
-// their plane: their own surface.
+// Closed casters hide a sample only from their outer side (hard: only their
+// light-back-facing triangles are drawn); open ones from both. No triangle
+// hides a sample within aliasfreeEpsilon of its plane (relative to the
+// sample's distance from the light): one on the triangle itself.
 // Uses: vtkAliasFreeCastersGS.glsl (its outputs), vtkAliasFreeLookup.glsl
 // (soft, prepended by the pass).
 
@@ -32,41 +33,9 @@ uniform float aliasfreeEpsilon;
 uniform vec4 aliasfreeLight; // world position (w = 1), or direction towards it (w = 0)
 
 #ifdef ALIASFREE_SOFT
-layout(std430, binding = 6) readonly buffer aliasfreeLookupBuffer { uint aliasfreeLookup[]; };
-// World normals to the light's frame, scaled by the light's size and shape
-// (spot lights: radius times the shape's scale; directional lights: the
-// tangent of the angular radius across the axis, nothing along it).
-uniform mat3 aliasfreeToLight;
 flat in vec3 aliasfreeA;
 flat in vec3 aliasfreeB;
 flat in vec3 aliasfreeC;
-
-// The light samples x with dot(m, x - q) > 0: x = c + T s for a spot light
-// of centre c, x - q = l + T s for directional lights (l towards the light,
-// T s across it), T the light's frame and size (aliasfreeToLight
-// transposed), s a sample of the table.
-aliasfreePlaneMask aliasfreeSide(vec3 m, vec3 q)
-{
-  vec3 n = aliasfreeToLight * m;
-  float length = max(sqrt(dot(n, n)), 1.0e-30);
-  vec3 centre = aliasfreeLight.w > 0.5 ? aliasfreeLight.xyz - q : aliasfreeLight.xyz;
-  return aliasfreeFindCell(n / length, -dot(m, centre) / length);
-}
-
-bool aliasfreeEmpty(aliasfreePlaneMask m)
-{
-  return m.cell < 0 && (m.fill ^ m.flip) == 0u;
-}
-
-bool aliasfreeFull(aliasfreePlaneMask m)
-{
-  return m.cell < 0 && (m.fill ^ m.flip) == 0xffffffffu;
-}
-
-uint aliasfreeWord(aliasfreePlaneMask m, int word)
-{
-  return (m.cell < 0 ? m.fill : aliasfreeLookup[m.cell * aliasfreeWords + word]) ^ m.flip;
-}
 #else
 flat in vec4 aliasfreePlane;
 flat in vec4 aliasfreeEdge0;
@@ -81,9 +50,12 @@ float aliasfreeScale(vec3 p)
   return aliasfreeLight.w > 0.5 ? distance(p, aliasfreeLight.xyz) : 1.0;
 }
 
+// A sample this near a triangle's plane lies on it (its own face, seen
+// from either side: a camera inside a closed caster sees its back faces) and
+// is not hidden by it.
 float aliasfreeTolerance(vec3 p)
 {
-  return aliasfreeClosed == 1 ? 0.0 : aliasfreeEpsilon * aliasfreeScale(p);
+  return aliasfreeEpsilon * aliasfreeScale(p);
 }
 
 void main()
@@ -116,7 +88,7 @@ void main()
     float side = dot(normal, p - aliasfreeA);
     // A triangle in p's own plane (p's face, coplanar neighbours) hides
     // nothing from it: its cone is flat. Closed casters hide from outside.
-    if (abs(side) <= aliasfreeEpsilon * aliasfreeScale(p) ||
+    if (abs(side) <= aliasfreeTolerance(p) ||
       (aliasfreeClosed == 1 && aliasfreeOrientation * side <= 0.0))
     {
       continue;
@@ -125,7 +97,7 @@ void main()
     // whole light outside (most samples of a region: the lit side), all as
     // long as every plane holds the whole light (the umbra).
     aliasfreePlaneMask planes[4];
-    planes[3] = aliasfreeSide(side > 0.0 ? -normal : normal, aliasfreeA);
+    planes[3] = aliasfreeSide(side > 0.0 ? -normal : normal, aliasfreeA, aliasfreeLight);
     bool none = aliasfreeEmpty(planes[3]);
     bool all = aliasfreeFull(planes[3]);
     for (int i = 0; i < 3 && !none; ++i)
@@ -133,7 +105,7 @@ void main()
       vec3 q = corners[i], r = corners[(i + 1) % 3], o = corners[(i + 2) % 3];
       vec3 m = cross(q - p, r - p);
       none = dot(m, m) <= 0.0; // p on an edge's line
-      planes[i] = aliasfreeSide(dot(m, o - p) >= 0.0 ? m : -m, p);
+      planes[i] = aliasfreeSide(dot(m, o - p) >= 0.0 ? m : -m, p, aliasfreeLight);
       none = none || aliasfreeEmpty(planes[i]);
       all = all && aliasfreeFull(planes[i]);
     }

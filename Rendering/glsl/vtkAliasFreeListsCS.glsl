@@ -12,8 +12,9 @@
 // - ALIASFREE_RESOLVE: each pixel's visibility from its sample's hidden bit
 //   (hard) or the popcount of its mask of light samples (soft).
 // A view sample is a pixel's surface (the camera pass's position and face
-// normal) that faces the light: samples facing away are in their own shadow
-// (visibility 0), pixels outside the light's map are lit.
+// normal) that faces the light (soft: some point of it): samples facing away
+// are in their own shadow (visibility 0), pixels outside the light's map
+// are lit.
 
 #if defined(ALIASFREE_SCAN_BLOCKS) || defined(ALIASFREE_SCAN_TOP)
 layout(local_size_x = 256) in;
@@ -21,7 +22,9 @@ layout(local_size_x = 256) in;
 layout(local_size_x = 8, local_size_y = 8) in;
 #endif
 
+#ifndef ALIASFREE_RESOLVE
 layout(std430, binding = 0) buffer aliasfreeCountsBuffer { uint aliasfreeCounts[]; };
+#endif
 layout(std430, binding = 1) buffer aliasfreeOffsetsBuffer { uint aliasfreeOffsets[]; };
 #ifndef ALIASFREE_RESOLVE
 layout(std430, binding = 2) buffer aliasfreeBlocksBuffer { uint aliasfreeBlocks[]; };
@@ -49,6 +52,10 @@ uniform mat4 aliasfreeWorldToClip;    // the light's map (fitted, after ALIASFRE
 uniform vec4 aliasfreeLight;          // position (w = 1), or direction towards it (w = 0)
 uniform vec3 aliasfreeEye;            // the map's eye and axis, for depths
 uniform vec3 aliasfreeAxis;
+// How far a sample's face may turn from the light's centre and still see
+// part of the light: 0 (hard); a spot light's bounding radius (world); for
+// directional lights the sine of the angular radius.
+uniform float aliasfreeFacingSlack;
 
 int aliasfreeOrdered(float f)
 {
@@ -81,7 +88,8 @@ bool aliasfreeViewSample(out vec3 position, out vec2 ndc, out uint why)
   vec4 n = texelFetch(aliasfreeNormals, pixel, 0);
   vec3 towards = aliasfreeLight.w > 0.5 ? aliasfreeLight.xyz - p.xyz : aliasfreeLight.xyz;
   why = aliasfreeFacingAway;
-  if (n.w > 0.5 && dot(n.xyz, towards) <= 0.0)
+  float slack = aliasfreeLight.w > 0.5 ? aliasfreeFacingSlack : aliasfreeFacingSlack * length(towards);
+  if (n.w > 0.5 && dot(n.xyz, towards) <= -slack)
   {
     return false; // points and lines (no face) face every way
   }
@@ -280,10 +288,12 @@ void main()
 #endif
 
 #ifdef ALIASFREE_RESOLVE
-uniform int aliasfreeWords;           // 0: hard, one bit a sample; else words a mask
+// aliasfreeWords (vtkAliasFreeLookup.glsl): 0 hard, one bit a sample; else
+// words a mask.
 uniform int aliasfreeRestrict;        // soft: 1 where only marked texels hold masks
+uniform int aliasfreeListedOnly;      // 1: write only the pixels listed (a cube's later faces)
 layout(std430, binding = 2) readonly buffer aliasfreeMarksBuffer { uint aliasfreeMarks[]; };
-layout(std430, binding = 6) readonly buffer aliasfreeCentreBuffer { uint aliasfreeCentre[]; };
+layout(std430, binding = 0) readonly buffer aliasfreeCentreBuffer { uint aliasfreeCentre[]; };
 uniform vec3 aliasfreeCameraPosition;
 layout(rgba32f, binding = 0) writeonly uniform image2D aliasfreeVisibility;
 
@@ -295,6 +305,10 @@ void main()
   }
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   uvec2 entry = aliasfreePixels[aliasfreePixelIndex()];
+  if (aliasfreeListedOnly == 1 && entry.x == aliasfreeNone)
+  {
+    return;
+  }
   vec4 p = texelFetch(aliasfreePositions, pixel, 0);
   float visibility = 1.0;
   if (entry.x != aliasfreeNone)
@@ -311,10 +325,16 @@ void main()
     }
     else
     {
+      // The light samples behind the sample's own surface (its tangent
+      // plane) are hidden by that surface: near a terminator, part of the
+      // light is.
+      vec4 n = texelFetch(aliasfreeNormals, pixel, 0);
+      aliasfreePlaneMask below = aliasfreeSide(n.w > 0.5 ? -n.xyz : vec3(0.0), p.xyz, aliasfreeLight);
       uint hidden = 0u;
       for (int w = 0; w < aliasfreeWords; ++w)
       {
-        hidden += uint(bitCount(aliasfreeHidden[slot * uint(aliasfreeWords) + uint(w)]));
+        uint own = n.w > 0.5 ? aliasfreeWord(below, w) : 0u;
+        hidden += uint(bitCount(aliasfreeHidden[slot * uint(aliasfreeWords) + uint(w)] | own));
       }
       visibility = 1.0 - float(hidden) / float(32 * aliasfreeWords);
     }

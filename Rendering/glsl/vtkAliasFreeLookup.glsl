@@ -8,7 +8,8 @@
 // the same cell and complements it, so that the two sides of an edge shared
 // by two triangles split the samples exactly, with no crack between them.
 // The mask of a cell is that of the plane at its centre.
-// Used by vtkAliasFreeLookupBuildCS.glsl and vtkAliasFreeCastersFS.glsl.
+// Used by vtkAliasFreeLookupBuildCS.glsl, vtkAliasFreeCastersFS.glsl and
+// vtkAliasFreeListsCS.glsl (its resolve).
 
 // The hemisphere's normals by their octahedral coordinates (no
 // trigonometry): n / (|x| + |y| + z) is a point of the diamond
@@ -63,3 +64,39 @@ aliasfreePlaneMask aliasfreeFindCell(vec3 n, float d)
   }
   return m;
 }
+
+// World normals to the light's frame, scaled by the light's size and shape
+// (spot lights: radius times the shape's scale; directional lights: the
+// tangent of the angular radius across the axis, nothing along it).
+uniform mat3 aliasfreeToLight;
+
+// The light samples x with dot(m, x - q) > 0: x = c + T s for a spot light
+// of centre c (`light`, w = 1), x - q = l + T s for directional lights (l
+// towards the light, w = 0; T s across it), T the light's frame and size
+// (aliasfreeToLight transposed), s a sample of the table.
+aliasfreePlaneMask aliasfreeSide(vec3 m, vec3 q, vec4 light)
+{
+  vec3 n = aliasfreeToLight * m;
+  float length = max(sqrt(dot(n, n)), 1.0e-30);
+  vec3 centre = light.w > 0.5 ? light.xyz - q : light.xyz;
+  return aliasfreeFindCell(n / length, -dot(m, centre) / length);
+}
+
+#ifndef ALIASFREE_LOOKUP_BUILD
+layout(std430, binding = 6) readonly buffer aliasfreeLookupBuffer { uint aliasfreeLookup[]; };
+
+bool aliasfreeEmpty(aliasfreePlaneMask m)
+{
+  return m.cell < 0 && (m.fill ^ m.flip) == 0u;
+}
+
+bool aliasfreeFull(aliasfreePlaneMask m)
+{
+  return m.cell < 0 && (m.fill ^ m.flip) == 0xffffffffu;
+}
+
+uint aliasfreeWord(aliasfreePlaneMask m, int word)
+{
+  return (m.cell < 0 ? m.fill : aliasfreeLookup[m.cell * aliasfreeWords + word]) ^ m.flip;
+}
+#endif

@@ -1,6 +1,7 @@
 // Builds the lookup table (vtkAliasFreeLookup.glsl): one invocation per
 // 32-bit word of a cell's mask.
-// Uses: vtkAliasFreeLookup.glsl (prepended by the pass).
+// Uses: vtkAliasFreeLookup.glsl (prepended by the pass, with
+// ALIASFREE_LOOKUP_BUILD defined: this shader writes the table).
 
 layout(local_size_x = 256) in;
 

@@ -2,7 +2,7 @@
 against the ray-cast truth: hard shadows that match an exact hard shadow at
 any map size, with no bias at all; soft shadows near the truth of a
 spherical light on a ball, a fence, a knot and a self-shadowing blob, for
-every number of light samples; penumbrae that widen as the ball rises;
+every number of light samples, under spot, point and directional lights; penumbrae that widen as the ball rises;
 light shapes and their scaling; bad cases (a light inside a caster, a frame
 over its memory limit, odd meshes) drawn with clear errors or right
 images."""
@@ -80,6 +80,15 @@ for name, scene in scenes(0.0).items():
                  "differ, hard %.4f%%)" % (name, map_size, 100 * mismatch["aliasfree:hard"],
                                           100 * mismatch["hard"]))
 
+# A point light: its six cube faces each list their own samples.
+scene = st.ball_scene(height=1.0, light_radius=0.0, technique="aliasfree:hard", size=SIZE,
+                      light_type="point")
+truth, _, mask = st.truth(scene, samples=16)
+visibility, _ = st.shadow_only(scene)
+mismatch = float(((visibility > 0.5) != (truth > 0.5))[mask].mean())
+st.check(mismatch < 0.002, "point light: alias-free hard shadows match the exact one (%.4f%% of "
+         "pixels differ)" % (100 * mismatch))
+
 # No bias at all: the shadow-map biases change nothing the camera sees.
 for variant, radius in (("hard", 0.0), ("soft", 0.4)):
     scene = st.ball_scene(height=1.0, light_radius=radius, technique="aliasfree:" + variant,
@@ -105,10 +114,11 @@ for name, scene in scenes(0.3).items():
              "%s: soft shadows within 0.015 of the truth and under half hard's error "
              "(%.4f, hard %.4f)" % (name, errors["aliasfree"], errors["hard"]))
 
-# The closed form of the ball's ground visibility, under a spot light and a
-# directional light of 5 degrees.
-for light_type in ("spot", "directional"):
-    scene = st.ball_scene(height=1.0, light_radius=0.4, technique="aliasfree", size=SIZE)
+# The closed form of the ball's ground visibility, under a spot light, a
+# point light (six cube faces) and a directional light of 5 degrees.
+for light_type in ("spot", "point", "directional"):
+    scene = st.ball_scene(height=1.0, light_radius=0.4, technique="aliasfree", size=SIZE,
+                          light_type="point" if light_type == "point" else "spot")
     if light_type == "directional":
         scene["lights"] = [{"type": "directional", "direction": [-0.3, -1.0, -0.2],
                             "radius": 5.0}]
