@@ -6,6 +6,7 @@
 #include "vtkDataArray.h"
 #include "vtkEdgeAdjacencyFilter.h"
 #include "vtkFloatArray.h"
+#include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPointData.h"
@@ -32,7 +33,9 @@
 #include "vtkAliasFreeLookup.h"
 #include "vtkAliasFreeLookupBuildCS.h"
 
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/trigonometric.hpp>
@@ -40,6 +43,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <memory>
 #include <random>
@@ -256,7 +260,11 @@ struct vtkAliasFreeShadowPass::Internals
   vtkShadowCompute::Buffer CountsBuffer, OffsetsBuffer, BlocksBuffer, PixelsBuffer, SamplesBuffer,
     HiddenBuffer, StatsBuffer, LightSamples, MarksBuffer, CentreBuffer;
   std::vector<std::unique_ptr<LookupTable>> Lookups; // per light slot
-  vtkSmartPointer<vtkTextureObject> Target;          // the casters' draw: a map-sized target
+  // Temporal jitter: per light slot, what the last frame saw and how many
+  // frames its accumulated visibility holds.
+  std::vector<std::vector<double>> Still;
+  std::vector<int> History;
+  vtkSmartPointer<vtkTextureObject> Target; // the casters' draw: a map-sized target
   std::string Vertex = WithDefines(vtkAliasFreeCastersVS, "");
   std::string HardGeometry = WithDefines(vtkAliasFreeCastersGS, "");
   std::string HardFragment = WithDefines(vtkAliasFreeCastersFS, "");
@@ -401,7 +409,8 @@ bool vtkAliasFreeShadowPass::RenderScreenSpace(const vtkRenderState* s)
   {
     if (soft && light.Radius > 0.0)
     {
-      bytes += LookupAngles * LookupDistances * 4.0 * words + this->NumberOfLightSamples * 16.0;
+      bytes += (this->Jitter ? pixels * 16.0 : 0.0) + LookupAngles * LookupDistances * 4.0 * words +
+        this->NumberOfLightSamples * 16.0;
     }
   }
   this->MemoryBytes = bytes;
@@ -442,6 +451,8 @@ bool vtkAliasFreeShadowPass::RenderScreenSpace(const vtkRenderState* s)
     in.Target->Allocate2D(this->MapSize, this->MapSize, 1, VTK_UNSIGNED_CHAR);
   }
   in.Lookups.resize(lights.size());
+  in.Still.resize(lights.size());
+  in.History.resize(lights.size(), 0);
 
   positions->Activate();
   normals->Activate();
@@ -462,6 +473,39 @@ bool vtkAliasFreeShadowPass::RenderLight(const vtkRenderState* s, int slot)
   // A point light: each of its six cube faces in turn, with its own lists;
   // each face's resolve writes the pixels whose samples it listed.
   const auto& light = this->Maps->GetLights()[slot];
+  // Temporal jitter (section 4.2): while the view, the light, the casters
+  // and the settings stay as they were, each frame turns the light samples
+  // and adds its visibility to the ones before.
+  Internals& in = *this->Internal;
+  std::vector<double> still;
+  if (this->Jitter && this->Variant == Soft && light.Radius > 0.0)
+  {
+    vtkRenderer* renderer = s->GetRenderer();
+    vtkCamera* camera = renderer->GetActiveCamera();
+    const double* matrix =
+      camera->GetCompositeProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1.0, 1.0)
+        ->GetData();
+    still.assign(matrix, matrix + 16);
+    still.insert(still.end(),
+      { static_cast<double>(this->Screen->GetWidth()),
+        static_cast<double>(this->Screen->GetHeight()), light.Position.x, light.Position.y,
+        light.Position.z, light.Direction.x, light.Direction.y, light.Direction.z,
+        light.Map.Direction.x, light.Map.Direction.y, light.Map.Direction.z, light.Radius,
+        light.ConeAngle, static_cast<double>(this->MapSize),
+        static_cast<double>(this->NumberOfLightSamples), static_cast<double>(this->LightShape),
+        this->LightScale[0], this->LightScale[1], this->LightScale[2],
+        static_cast<double>(this->Seed), this->RestrictToSilhouettes ? 1.0 : 0.0 });
+    for (const vtkShadowCaster& caster : this->Casters->GetCasters())
+    {
+      still.push_back(static_cast<double>(reinterpret_cast<uintptr_t>(caster.Data)));
+      still.push_back(static_cast<double>(caster.Data->GetMTime()));
+      const double* m = &caster.ModelToWorld[0][0];
+      still.insert(still.end(), m, m + 16);
+    }
+  }
+  const bool same = !still.empty() && still == in.Still[slot];
+  in.History[slot] = same ? std::min(in.History[slot] + 1, this->MaximumFramesAccumulated - 1) : 0;
+  in.Still[slot] = std::move(still);
   if (!light.Point)
   {
     return this->RenderFrustum(s, slot, light.Map, true);
@@ -671,7 +715,48 @@ bool vtkAliasFreeShadowPass::RenderFrustum(
       : light.Radius * glm::dvec3(scale[0], scale[1], scale[2]);
     const glm::dmat3 shape(
       glm::dvec3(size.x, 0.0, 0.0), glm::dvec3(0.0, size.y, 0.0), glm::dvec3(0.0, 0.0, size.z));
-    toLight = glm::mat3(shape * glm::transpose(frame));
+    // Jittered: the samples turned by J (any rotation of the ball; about
+    // the axis for discs and the cone; the square's eight symmetries), so
+    // normals by J^T. Frame 0 of an accumulation is not turned.
+    glm::dmat3 turn(1.0);
+    const int history = in.History[slot];
+    if (history > 0)
+    {
+      std::mt19937 generator(this->Seed * 7919u + static_cast<unsigned int>(history));
+      std::uniform_real_distribution<double> uniform(0.0, 1.0);
+      const double twoPi = 2.0 * glm::pi<double>();
+      auto aboutZ = [](double angle)
+      {
+        return glm::dmat3(glm::dvec3(std::cos(angle), std::sin(angle), 0.0),
+          glm::dvec3(-std::sin(angle), std::cos(angle), 0.0), glm::dvec3(0.0, 0.0, 1.0));
+      };
+      if (!light.Directional && this->LightShape == Sphere)
+      {
+        // A uniform random rotation: a random axis (uniform on the sphere)
+        // and angle from a uniform quaternion (Shoemake).
+        const double u1 = uniform(generator), u2 = uniform(generator), u3 = uniform(generator);
+        const glm::dquat q(std::sqrt(u1) * std::cos(twoPi * u3),
+          std::sqrt(1.0 - u1) * std::sin(twoPi * u2), std::sqrt(1.0 - u1) * std::cos(twoPi * u2),
+          std::sqrt(u1) * std::sin(twoPi * u3));
+        turn = glm::mat3_cast(q);
+      }
+      else if (!light.Directional && this->LightShape == Rectangle)
+      {
+        const int symmetry = static_cast<int>(uniform(generator) * 8.0) % 8;
+        turn = aboutZ(0.5 * glm::pi<double>() * (symmetry % 4));
+        if (symmetry >= 4)
+        {
+          turn = turn *
+            glm::dmat3(
+              glm::dvec3(1.0, 0.0, 0.0), glm::dvec3(0.0, -1.0, 0.0), glm::dvec3(0.0, 0.0, 1.0));
+        }
+      }
+      else
+      {
+        turn = aboutZ(twoPi * uniform(generator));
+      }
+    }
+    toLight = glm::mat3(glm::transpose(turn) * shape * glm::transpose(frame));
   }
 
   // 4. Every caster triangle over the texels it touches (its influence
@@ -809,6 +894,14 @@ bool vtkAliasFreeShadowPass::RenderFrustum(
   }
   in.Resolve.SetUniform3f("aliasfreeCameraPosition", cameraPosition);
   vtkShadowCompute::BindImage(0, visibility, GL_WRITE_ONLY, GL_RGBA32F);
+  const bool jittered = this->Jitter && soft;
+  in.Resolve.SetUniformi("aliasfreeHistory", jittered ? in.History[slot] : -1);
+  if (jittered)
+  {
+    vtkTextureObject* history =
+      this->Screen->GetTexture("aliasfree.history" + std::to_string(slot), 4);
+    vtkShadowCompute::BindImage(1, history, GL_READ_WRITE, GL_RGBA32F);
+  }
   in.Resolve.Dispatch(groupsX, groupsY);
   vtkShadowCompute::Barrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   return true;
@@ -852,6 +945,8 @@ void vtkAliasFreeShadowPass::PrintSelf(ostream& os, vtkIndent indent)
      << this->LightScale[2] << "\n";
   os << indent << "FitToViewSamples: " << this->FitToViewSamples << "\n";
   os << indent << "RestrictToSilhouettes: " << this->RestrictToSilhouettes << "\n";
+  os << indent << "Jitter: " << this->Jitter << "\n";
+  os << indent << "MaximumFramesAccumulated: " << this->MaximumFramesAccumulated << "\n";
   os << indent << "Seed: " << this->Seed << "\n";
   os << indent << "MemoryLimit: " << this->MemoryLimit << "\n";
   os << indent << "MemoryBytes: " << this->MemoryBytes << "\n";

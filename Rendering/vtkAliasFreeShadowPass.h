@@ -143,6 +143,22 @@ public:
 
   ///@{
   /**
+   * Soft: temporal jitter (section 4.2). While the view, the lights, the
+   * casters and these settings stay as they were, each frame turns the light
+   * samples (any rotation for a sphere, about the axis for a disc or a
+   * directional light's cone, the square's symmetries) and averages its
+   * visibility with the frames before, up to MaximumFramesAccumulated; a
+   * frame after any change starts again, unturned. Default on.
+   */
+  vtkSetMacro(Jitter, bool);
+  vtkGetMacro(Jitter, bool);
+  vtkBooleanMacro(Jitter, bool);
+  vtkSetClampMacro(MaximumFramesAccumulated, int, 1, 1024);
+  vtkGetMacro(MaximumFramesAccumulated, int);
+  ///@}
+
+  ///@{
+  /**
    * Seed of the light samples' positions. Default 1.
    */
   vtkSetMacro(Seed, unsigned int);
@@ -188,6 +204,8 @@ protected:
   double LightScale[3] = { 1.0, 1.0, 1.0 };
   bool FitToViewSamples = true;
   bool RestrictToSilhouettes = true;
+  bool Jitter = true;
+  int MaximumFramesAccumulated = 64;
   unsigned int Seed = 1;
   double MemoryLimit = 1024.0;
   double MemoryBytes = 0.0;

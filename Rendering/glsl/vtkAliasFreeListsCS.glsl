@@ -296,6 +296,10 @@ layout(std430, binding = 2) readonly buffer aliasfreeMarksBuffer { uint aliasfre
 layout(std430, binding = 0) readonly buffer aliasfreeCentreBuffer { uint aliasfreeCentre[]; };
 uniform vec3 aliasfreeCameraPosition;
 layout(rgba32f, binding = 0) writeonly uniform image2D aliasfreeVisibility;
+// Temporal jitter: the visibility accumulated over the frames before (their
+// number; 0: none, this frame starts it; -1: no jitter, no history).
+layout(rgba32f, binding = 1) uniform image2D aliasfreeHistoryImage;
+uniform int aliasfreeHistory;
 
 void main()
 {
@@ -345,7 +349,18 @@ void main()
   }
   // (visibility, valid, camera distance): vtkShadowScreenBuffers::BeginVisibility().
   float valid = entry.x != aliasfreeNone || entry.y != aliasfreeBackground ? 1.0 : 0.0;
-  imageStore(aliasfreeVisibility, pixel,
-    vec4(visibility, valid, valid > 0.5 ? distance(p.xyz, aliasfreeCameraPosition) : 0.0, 0.0));
+  vec4 result =
+    vec4(visibility, valid, valid > 0.5 ? distance(p.xyz, aliasfreeCameraPosition) : 0.0, 0.0);
+  if (aliasfreeWords > 0 && aliasfreeHistory > 0)
+  {
+    vec4 before = imageLoad(aliasfreeHistoryImage, pixel);
+    float k = float(aliasfreeHistory);
+    result.r = (before.r * k + visibility) / (k + 1.0);
+  }
+  if (aliasfreeWords > 0 && aliasfreeHistory >= 0)
+  {
+    imageStore(aliasfreeHistoryImage, pixel, result);
+  }
+  imageStore(aliasfreeVisibility, pixel, result);
 }
 #endif
