@@ -279,44 +279,33 @@ struct vtkAliasFreeShadowPass::Internals
 
   bool BuildPrograms(vtkAliasFreeShadowPass* pass)
   {
-    if (this->Resolve.IsBuilt())
+    if (this->BuildLookup.IsBuilt())
     {
       return true;
     }
-    const std::pair<vtkShadowCompute::Program*, const char*> lists[] = {
-      { &this->Bounds, "ALIASFREE_BOUNDS" }, { &this->Count, "ALIASFREE_COUNT" },
-      { &this->ScanBlocks, "ALIASFREE_SCAN_BLOCKS" }, { &this->ScanTop, "ALIASFREE_SCAN_TOP" },
-      { &this->ScanAdd, "ALIASFREE_SCAN_ADD" }, { &this->Scatter, "ALIASFREE_SCATTER" }
+    // The list stages, one define each; the resolve with the lookup table's
+    // code (a sample's own tangent plane); the table's construction.
+    const std::string lookup = std::string(vtkAliasFreeLookup) + "\n";
+    const std::tuple<vtkShadowCompute::Program*, std::string, std::string> programs[] = {
+      { &this->Bounds, "ALIASFREE_BOUNDS", vtkAliasFreeListsCS },
+      { &this->Count, "ALIASFREE_COUNT", vtkAliasFreeListsCS },
+      { &this->ScanBlocks, "ALIASFREE_SCAN_BLOCKS", vtkAliasFreeListsCS },
+      { &this->ScanTop, "ALIASFREE_SCAN_TOP", vtkAliasFreeListsCS },
+      { &this->ScanAdd, "ALIASFREE_SCAN_ADD", vtkAliasFreeListsCS },
+      { &this->Scatter, "ALIASFREE_SCATTER", vtkAliasFreeListsCS },
+      { &this->Resolve, "ALIASFREE_RESOLVE", lookup + vtkAliasFreeListsCS },
+      { &this->BuildLookup, "ALIASFREE_LOOKUP_BUILD", lookup + vtkAliasFreeLookupBuildCS }
     };
     std::string log;
-    for (const auto& program : lists)
+    for (const auto& program : programs)
     {
-      if (!program.first->Build(
-            WithDefines(vtkAliasFreeListsCS, "#define " + std::string(program.second) + "\n"),
-            &log))
+      if (!std::get<0>(program)->Build(
+            WithDefines(std::get<2>(program), "#define " + std::get<1>(program) + "\n"), &log))
       {
-        vtkErrorWithObjectMacro(
-          pass, "aliasfree: the " << program.second << " compute shader did not build: " << log);
+        vtkErrorWithObjectMacro(pass,
+          "aliasfree: the " << std::get<1>(program) << " compute shader did not build: " << log);
         return false;
       }
-    }
-    if (!this->Resolve.Build(
-          WithDefines(std::string(vtkAliasFreeLookup) + "\n" + vtkAliasFreeListsCS,
-            "#define ALIASFREE_RESOLVE\n"),
-          &log))
-    {
-      vtkErrorWithObjectMacro(
-        pass, "aliasfree: the ALIASFREE_RESOLVE compute shader did not build: " << log);
-      return false;
-    }
-    if (!this->BuildLookup.Build(
-          WithDefines(std::string(vtkAliasFreeLookup) + "\n" + vtkAliasFreeLookupBuildCS,
-            "#define ALIASFREE_LOOKUP_BUILD\n"),
-          &log))
-    {
-      vtkErrorWithObjectMacro(
-        pass, "aliasfree: the lookup table's compute shader did not build: " << log);
-      return false;
     }
     return true;
   }

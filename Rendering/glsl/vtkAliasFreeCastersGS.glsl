@@ -247,6 +247,21 @@ int aliasfreeInfluence(int n)
   aliasfreeHull(points, count);
   return aliasfreeRegionSize < 3 ? 0 : 1;
 }
+
+// The influence region of the first n input vertices, grown, or the whole
+// map where it is unbounded.
+void aliasfreeEmitInfluence(int n)
+{
+  int region = aliasfreeInfluence(n);
+  if (region < 0)
+  {
+    aliasfreeEmitAll();
+  }
+  else if (region > 0)
+  {
+    aliasfreeEmitGrown();
+  }
+}
 #endif
 
 vec3 aliasfreeTowardsLight(vec3 p)
@@ -278,15 +293,7 @@ void main()
       return; // a silhouette for no point of the light
     }
   }
-  int region = aliasfreeInfluence(2);
-  if (region < 0)
-  {
-    aliasfreeEmitAll();
-  }
-  else if (region > 0)
-  {
-    aliasfreeEmitGrown();
-  }
+  aliasfreeEmitInfluence(2);
 }
 #else
 void main()
@@ -313,15 +320,7 @@ void main()
       return;
     }
   }
-  int region = aliasfreeInfluence(3);
-  if (region < 0)
-  {
-    aliasfreeEmitAll();
-  }
-  else if (region > 0)
-  {
-    aliasfreeEmitGrown();
-  }
+  aliasfreeEmitInfluence(3);
 #else
   // Closed casters: light-back-facing triangles alone (section 3.3).
   if (aliasfreeClosed == 1 && aliasfreeOrientation * facing > 0.0)

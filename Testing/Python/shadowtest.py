@@ -431,17 +431,14 @@ def check_odd_meshes(technique):
                       % (technique, name, visibility[under].max(), visibility[beside].min()))
 
 
-def render_line_casters(pass_class, with_lines):
+def api_ball(pass_class, light_radius=0.3, light_x=0.0, ball_resolution=None, casters=()):
     """The ball over the ground through the Python API, drawn shadow-only by
-    a `pass_class` pass (200 x 150), with (`with_lines`) a polyline and a
-    polyvertex beside the ball among the casters: casters without faces,
-    which scene files refuse. Returns (the red channel, bottom row first;
-    the pass's errors and warnings; the pass)."""
-    from vtkmodules.vtkCommonCore import vtkCommand, vtkPoints
-    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+    a `pass_class` pass into a 200 x 150 off-screen window, under a spot
+    light at (light_x, 5, 0); `casters`: more polydata among the casters.
+    Returns (window, light, pass)."""
     from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
     from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkPolyDataMapper,
-                                             vtkRenderWindow, vtkRenderer, vtkWindowToImageFilter)
+                                             vtkRenderWindow, vtkRenderer)
     import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (OpenGL factory)
 
     def add(renderer, data):
@@ -463,7 +460,55 @@ def render_line_casters(pass_class, with_lines):
     ball = vtkSphereSource()
     ball.SetCenter(0, 1, 0)
     ball.SetRadius(0.5)
+    if ball_resolution:
+        ball.SetThetaResolution(ball_resolution)
+        ball.SetPhiResolution(ball_resolution)
     add(renderer, ball)
+    for data in casters:
+        add(renderer, data)
+    light = vtkLight()
+    light.SetLightTypeToSceneLight()
+    light.SetPositional(True)
+    light.SetPosition(light_x, 5, 0)
+    light.SetFocalPoint(0, 0, 0)
+    light.SetConeAngle(45)
+    pass_class.SetRadius(light_radius, light)
+    renderer.AddLight(light)
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(0, 6, 6)
+    camera.SetFocalPoint(0, 0, 0)
+    renderer.ResetCameraClippingRange()
+    shadows = pass_class()
+    shadows.SetShadowOnlyLight(0)
+    renderer.SetPass(shadows)
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(True)
+    window.SetSize(200, 150)
+    window.AddRenderer(renderer)
+    return window, light, shadows
+
+
+def grab_red(window):
+    """The window's red channel as drawn (no new frame), bottom row first."""
+    from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.ShouldRerenderOff()
+    grab.Update()
+    width, height = window.GetSize()
+    return vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())[:, 0].reshape(height, width)
+
+
+def render_line_casters(pass_class, with_lines):
+    """The ball over the ground through the Python API (api_ball), with
+    (`with_lines`) a polyline and a polyvertex beside the ball among the
+    casters: casters without faces, which scene files refuse. Returns (the
+    red channel, bottom row first; the pass's errors and warnings; the
+    pass)."""
+    from vtkmodules.vtkCommonCore import vtkCommand, vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+
+    casters = []
     if with_lines:
         for kind in ("lines", "points"):
             points = vtkPoints()
@@ -474,32 +519,10 @@ def render_line_casters(pass_class, with_lines):
             data = vtkPolyData()
             data.SetPoints(points)
             data.SetLines(cells) if kind == "lines" else data.SetVerts(cells)
-            add(renderer, data)
-    light = vtkLight()
-    light.SetLightTypeToSceneLight()
-    light.SetPositional(True)
-    light.SetPosition(0, 5, 0)
-    light.SetFocalPoint(0, 0, 0)
-    light.SetConeAngle(45)
-    pass_class.SetRadius(0.3, light)
-    renderer.AddLight(light)
-    camera = renderer.GetActiveCamera()
-    camera.SetPosition(0, 6, 6)
-    camera.SetFocalPoint(0, 0, 0)
-    renderer.ResetCameraClippingRange()
-    shadows = pass_class()
-    shadows.SetShadowOnlyLight(0)
-    renderer.SetPass(shadows)
+            casters.append(data)
+    window, _, shadows = api_ball(pass_class, casters=casters)
     errors = []
     shadows.AddObserver(vtkCommand.ErrorEvent, lambda *args: errors.append(args))
     shadows.AddObserver(vtkCommand.WarningEvent, lambda *args: errors.append(args))
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(True)
-    window.SetSize(200, 150)
-    window.AddRenderer(renderer)
     window.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.Update()
-    image = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())[:, 0].reshape(150, 200)
-    return image, errors, shadows
+    return grab_red(window), errors, shadows

@@ -154,60 +154,18 @@ for name, scene in (("ball", st.ball_scene(height=1.0, light_radius=0.4, techniq
 # average to nearly what 1024 give in one frame; a moved light starts again.
 def jitter_frames(count, samples, move_at=None, x=0.0):
     """The ball's shadow-only image after `count` still frames (the light
-    nudged before frame `move_at`), through the Python API."""
-    from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
-    from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkPolyDataMapper,
-                                             vtkRenderWindow, vtkRenderer, vtkWindowToImageFilter)
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (OpenGL factory)
+    nudged to x + 0.01 before frame `move_at`), through the Python API."""
     from vtksoftshadows import vtkAliasFreeShadowPass
 
-    renderer = vtkRenderer()
-    plane = vtkPlaneSource()
-    plane.SetOrigin(-3, 0, -3)
-    plane.SetPoint1(3, 0, -3)
-    plane.SetPoint2(-3, 0, 3)
-    ball = vtkSphereSource()
-    ball.SetCenter(0, 1, 0)
-    ball.SetRadius(0.5)
-    ball.SetThetaResolution(32)
-    ball.SetPhiResolution(32)
-    for source in (plane, ball):
-        mapper = vtkPolyDataMapper()
-        mapper.SetInputConnection(source.GetOutputPort())
-        actor = vtkActor()
-        actor.SetMapper(mapper)
-        renderer.AddActor(actor)
-    light = vtkLight()
-    light.SetLightTypeToSceneLight()
-    light.SetPositional(True)
-    light.SetPosition(x, 5, 0)
-    light.SetFocalPoint(0, 0, 0)
-    light.SetConeAngle(45)
-    vtkAliasFreeShadowPass.SetRadius(0.5, light)
-    renderer.AddLight(light)
-    camera = renderer.GetActiveCamera()
-    camera.SetPosition(0, 6, 6)
-    camera.SetFocalPoint(0, 0, 0)
-    renderer.ResetCameraClippingRange()
-    shadows = vtkAliasFreeShadowPass()
+    window, light, shadows = st.api_ball(vtkAliasFreeShadowPass, light_radius=0.5, light_x=x,
+                                         ball_resolution=32)
     shadows.SetNumberOfLightSamples(samples)
     shadows.SetMapSize(512)
-    shadows.SetShadowOnlyLight(0)
-    renderer.SetPass(shadows)
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(True)
-    window.SetSize(200, 150)
-    window.AddRenderer(renderer)
     for frame in range(count):
         if frame == move_at:
-            light.SetPosition(0.01, 5, 0)
+            light.SetPosition(x + 0.01, 5, 0)
         window.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.ShouldRerenderOff()
-    grab.Update()
-    return vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())[:, 0].reshape(150, 200) / 255.0
+    return st.grab_red(window) / 255.0
 
 
 reference = jitter_frames(1, 1024)
