@@ -3,9 +3,11 @@ against the ray-cast truth: hard shadows that match an exact hard shadow at
 any map size, with no bias at all; soft shadows near the truth of a
 spherical light on a ball, a fence, a knot and a self-shadowing blob, for
 every number of light samples, under spot, point and directional lights; penumbrae that widen as the ball rises;
-light shapes and their scaling; bad cases (a light inside a caster, a frame
-over its memory limit, odd meshes) drawn with clear errors or right
-images."""
+light shapes and their scaling; penumbrae restricted to the silhouettes as
+computed everywhere; temporal jitter converging while nothing moves; bad
+cases (a light inside a caster, a frame over its memory limit, a 2048x2048
+window, a million-triangle caster, no lights, odd meshes) drawn with clear
+errors or right images."""
 import copy
 import json
 import os
@@ -239,6 +241,29 @@ st.check(result.stderr.count("this frame needs") == 1 and "MemoryLimit" in resul
          visibility.min() > 0.99,
          "over MemoryLimit: one error naming it, the frame unshadowed (%s)"
          % result.stderr.strip().splitlines()[-1][-160:])
+
+# The view samples of a 2048x2048 window, and a caster of a million
+# triangles: right hard shadows, no error.
+for name, size, resolution in (("2048x2048 window", (2048, 2048), 64),
+                               ("1,004,400-triangle ball", SIZE, 710)):
+    scene = st.ball_scene(height=1.0, technique="aliasfree:hard", size=size)
+    scene["actors"][1]["params"]["resolution"] = resolution
+    visibility, _ = st.shadow_only(scene)
+    visible, shadowed, edge = st.expected_hard_shadow(scene)
+    away = visible & (edge > 1.5)
+    wrong = float(((visibility > 0.5) == shadowed)[away].mean())
+    st.check(wrong < 0.002, "%s: the hard shadow where the ball casts it (%.4f%% of ground "
+             "pixels wrong)" % (name, 100 * wrong))
+
+# No light at all (the renderer's own light): drawn, no error.
+scene = st.ball_scene(height=1.0, light_radius=0.4, technique="aliasfree", size=SIZE)
+scene["lights"] = []
+with tempfile.TemporaryDirectory() as folder:
+    scene_file = os.path.join(folder, "scene.json")
+    with open(scene_file, "w") as f:
+        json.dump(scene, f)
+    result = st.run(["render", scene_file, "--output", os.path.join(folder, "out.png")])
+st.check("rror" not in result.stderr, "no lights: drawn without an error")
 
 # Meshes open, non-manifold or with zero-area faces: right shadows, no error.
 st.check_odd_meshes("aliasfree")
