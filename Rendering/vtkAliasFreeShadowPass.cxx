@@ -459,8 +459,6 @@ bool vtkAliasFreeShadowPass::RenderScreenSpace(const vtkRenderState* s)
 //------------------------------------------------------------------------------
 bool vtkAliasFreeShadowPass::RenderLight(const vtkRenderState* s, int slot)
 {
-  // A point light: each of its six cube faces in turn, with its own lists;
-  // each face's resolve writes the pixels whose samples it listed.
   const auto& light = this->Maps->GetLights()[slot];
   // Temporal jitter (section 4.2): while the view, the light, the casters
   // and the settings stay as they were, each frame turns the light samples
@@ -495,6 +493,8 @@ bool vtkAliasFreeShadowPass::RenderLight(const vtkRenderState* s, int slot)
   const bool same = !still.empty() && still == in.Still[slot];
   in.History[slot] = same ? std::min(in.History[slot] + 1, this->MaximumFramesAccumulated - 1) : 0;
   in.Still[slot] = std::move(still);
+  // A point light: each of its six cube faces in turn, with its own lists;
+  // each face's resolve writes the pixels whose samples it listed.
   if (!light.Point)
   {
     return this->RenderFrustum(s, slot, light.Map, true);
