@@ -19,6 +19,17 @@ vtkShadowGeometry::vtkShadowGeometry() = default;
 vtkShadowGeometry::~vtkShadowGeometry() = default;
 
 //------------------------------------------------------------------------------
+std::shared_ptr<vtkShadowGeometry> vtkShadowGeometry::NewShared()
+{
+  return std::shared_ptr<vtkShadowGeometry>(new vtkShadowGeometry,
+    [](vtkShadowGeometry* geometry)
+    {
+      geometry->ReleaseGraphicsResources(nullptr);
+      delete geometry;
+    });
+}
+
+//------------------------------------------------------------------------------
 void vtkShadowGeometry::SetInput(vtkPolyData* data)
 {
   if (data != this->Input)

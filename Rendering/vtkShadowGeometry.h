@@ -30,6 +30,7 @@
 #include <glm/mat4x4.hpp> // for glm::dmat4
 
 #include <functional> // for std::function
+#include <memory>     // for std::shared_ptr
 #include <string>     // for std::string
 #include <vector>     // for std::vector
 
@@ -46,6 +47,13 @@ class VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowGeometry
 public:
   vtkShadowGeometry();
   ~vtkShadowGeometry();
+
+  /**
+   * A geometry that releases its graphics resources when the last owner
+   * lets it go (kept in a vtkShadowCasterCache entry, which is dropped with
+   * new data or a caster gone).
+   */
+  static std::shared_ptr<vtkShadowGeometry> NewShared();
 
   void SetInput(vtkPolyData* data);
   /// What the input's cells are drawn as.

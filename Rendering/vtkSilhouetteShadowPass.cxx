@@ -62,13 +62,7 @@ void BuildMesh(vtkPolyData* data, bool drop, CasterMesh& mesh)
   buffer->SetPolys(tam->GetPolys());
   buffer->GetPointData()->AddArray(tam->GetPointData()->GetArray("FacePositions"));
   buffer->GetPointData()->AddArray(tam->GetPointData()->GetArray("AdjacentNormals"));
-  // Released with the entry (a new polydata, or the caster gone).
-  mesh.Geometry = std::shared_ptr<vtkShadowGeometry>(new vtkShadowGeometry,
-    [](vtkShadowGeometry* geometry)
-    {
-      geometry->ReleaseGraphicsResources(nullptr);
-      delete geometry;
-    });
+  mesh.Geometry = vtkShadowGeometry::NewShared();
   mesh.Geometry->SetInput(buffer);
   mesh.Dropped = drop;
 }

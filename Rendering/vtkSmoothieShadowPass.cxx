@@ -62,17 +62,6 @@ struct SlotEdges
   std::array<vtkPolyData*, 6> QuadsFrom{}; ///< the Chained they came from
 };
 
-std::shared_ptr<vtkShadowGeometry> NewGeometry()
-{
-  // Released with the entry (a new polydata, or the caster gone).
-  return std::shared_ptr<vtkShadowGeometry>(new vtkShadowGeometry,
-    [](vtkShadowGeometry* geometry)
-    {
-      geometry->ReleaseGraphicsResources(nullptr);
-      delete geometry;
-    });
-}
-
 // What the pass keeps of each caster's polydata.
 struct CasterEdges
 {
@@ -418,7 +407,7 @@ bool vtkSmoothieShadowPass::RenderShadowMaps(const vtkRenderState* s)
       SlotEdges& entry = edges.Slots[slot];
       if (!entry.Geometry)
       {
-        entry.Geometry = NewGeometry();
+        entry.Geometry = vtkShadowGeometry::NewShared();
         entry.Geometry->SetPrimitive(vtkShadowGeometry::Primitive::LinesAdjacency);
       }
       if (entry.Light != key || entry.Search != this->SilhouetteSearch)
@@ -560,7 +549,7 @@ bool vtkSmoothieShadowPass::RenderShadowMaps(const vtkRenderState* s)
             entry.QuadsFrom[face] != entry.Chained)
           {
             const auto built = std::chrono::steady_clock::now();
-            quads = quads ? quads : NewGeometry();
+            quads = quads ? quads : vtkShadowGeometry::NewShared();
             QuadBuilder builder(modelToClip, caster.first->ModelToWorld, sizing);
             quads->SetInput(builder.Build(entry.Chained));
             entry.QuadsFor[face] = modelToClip;
