@@ -48,7 +48,6 @@
 #include <memory>
 #include <random>
 #include <tuple>
-#include <unordered_map>
 #include <vector>
 
 namespace
@@ -99,27 +98,13 @@ struct CasterTriangles
   float Orientation = 1.0f;
 };
 
-std::shared_ptr<vtkShadowGeometry> NewGeometry()
+// Each edge of `edges` (vtkEdgeAdjacencyFilter's output) as a line with
+// adjacency (a, b, a, b) whose points carry its two faces' normals:
+// aliasfreeFace0 (w = 1 for edges that are always silhouettes: borders,
+// non-manifold or inconsistently oriented ones) and aliasfreeFace1. Sets
+// `closed` when there are none of those: the faces close a volume.
+vtkSmartPointer<vtkPolyData> EdgesWithFaces(vtkPolyData* edges, bool& closed)
 {
-  // Released with the entry (a new polydata, or the caster gone).
-  return std::shared_ptr<vtkShadowGeometry>(new vtkShadowGeometry,
-    [](vtkShadowGeometry* geometry)
-    {
-      geometry->ReleaseGraphicsResources(nullptr);
-      delete geometry;
-    });
-}
-
-// Each edge of `mesh` as a line with adjacency (a, b, a, b) whose points
-// carry its two faces' normals: aliasfreeFace0 (w = 1 for edges that are
-// always silhouettes: borders, non-manifold or inconsistently oriented
-// ones) and aliasfreeFace1.
-vtkSmartPointer<vtkPolyData> EdgesWithFaces(vtkPolyData* mesh)
-{
-  vtkNew<vtkEdgeAdjacencyFilter> adjacency;
-  adjacency->SetInputData(mesh);
-  adjacency->Update();
-  vtkPolyData* edges = adjacency->GetOutput();
   vtkDataArray* types = edges->GetCellData()->GetArray("EdgeType");
   vtkDataArray* consistent = edges->GetCellData()->GetArray("ConsistentOrientation");
   vtkDataArray* normals = edges->GetCellData()->GetArray("FaceNormals");
@@ -138,12 +123,14 @@ vtkSmartPointer<vtkPolyData> EdgesWithFaces(vtkPolyData* mesh)
   vtkIdType n = 0;
   const vtkIdType* ids = nullptr;
   vtkIdType e = 0;
+  closed = count > 0;
   vtkCellArray* cells = edges->GetLines();
   for (cells->InitTraversal(); cells->GetNextCell(n, ids); ++e)
   {
     double f[6];
     normals->GetTuple(e, f);
     const bool always = types->GetComponent(e, 0) != 1.0 || consistent->GetComponent(e, 0) == 0.0;
+    closed = closed && !always;
     const float first[4] = { static_cast<float>(f[0]), static_cast<float>(f[1]),
       static_cast<float>(f[2]), always ? 1.0f : 0.0f };
     const float second[3] = { static_cast<float>(f[3]), static_cast<float>(f[4]),
@@ -174,51 +161,36 @@ void BuildTriangles(vtkPolyData* data, CasterTriangles& value)
   triangles->PassVertsOff();
   triangles->Update();
   vtkPolyData* mesh = triangles->GetOutput();
+  vtkNew<vtkEdgeAdjacencyFilter> adjacency;
+  adjacency->SetInputData(mesh);
+  adjacency->Update();
+  bool closed = false;
+  value.Edges = vtkShadowGeometry::NewShared();
+  value.Edges->SetPrimitive(vtkShadowGeometry::Primitive::LinesAdjacency);
+  value.Edges->SetInput(EdgesWithFaces(adjacency->GetOutput(), closed));
 
-  std::unordered_map<unsigned long long, int> directed;
-  const unsigned long long points = static_cast<unsigned long long>(mesh->GetNumberOfPoints());
+  // Divergence theorem: the signed volume of the tetrahedra to the origin
+  // says which way a closed mesh's normals point.
   double volume = 0.0;
   vtkIdType n = 0;
   const vtkIdType* ids = nullptr;
   vtkCellArray* polys = mesh->GetPolys();
-  bool manifold = true;
   for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
   {
-    if (n != 3)
-    {
-      manifold = false;
-      continue;
-    }
     double p[3][3];
     for (int k = 0; k < 3; ++k)
     {
       mesh->GetPoint(ids[k], p[k]);
-      const auto a = static_cast<unsigned long long>(ids[k]);
-      const auto b = static_cast<unsigned long long>(ids[(k + 1) % 3]);
-      manifold = manifold && ++directed[a * points + b] == 1;
     }
-    // Divergence theorem: the signed volume of the tetrahedra to the origin.
     volume += (p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) -
                 p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
                 p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0])) /
       6.0;
   }
-  for (const auto& edge : directed)
-  {
-    const unsigned long long a = edge.first / points, b = edge.first % points;
-    manifold = manifold && directed.count(b * points + a) == 1;
-    if (!manifold)
-    {
-      break;
-    }
-  }
-  value.Closed = manifold && !directed.empty() && volume != 0.0;
+  value.Closed = closed && volume != 0.0;
   value.Orientation = volume < 0.0 ? -1.0f : 1.0f;
-  value.Geometry = NewGeometry();
+  value.Geometry = vtkShadowGeometry::NewShared();
   value.Geometry->SetInput(mesh);
-  value.Edges = NewGeometry();
-  value.Edges->SetPrimitive(vtkShadowGeometry::Primitive::LinesAdjacency);
-  value.Edges->SetInput(EdgesWithFaces(mesh));
 }
 
 // The light's frame across its unit axis: e1 the world's x made

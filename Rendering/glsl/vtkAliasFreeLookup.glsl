@@ -1,6 +1,6 @@
 // The lookup table of sample-based visibility (Sintorn et al., section 4.2):
 // for a plane, the bitmask of the light samples on its positive side. A
-// plane is its unit normal n in the light's frame (two angles) and its
+// plane is its unit normal n in the light's frame (its direction) and its
 // distance d: light sample s (in the light's shape scaled to the unit ball;
 // for directional lights, on the unit disc their cone of directions crosses
 // at unit distance) is set when dot(n, s) > d.

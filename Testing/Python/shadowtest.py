@@ -170,6 +170,19 @@ def penumbra_width(scene, visibility, low=0.02, high=0.98):
     return float(x[band].max() - x[band].min())
 
 
+HEIGHTS = (0.75, 1.5, 2.25)
+
+
+def penumbra_widths(technique, light_radius=0.4):
+    """penumbra_width() of the ball's shadow by `technique` with the ball at
+    each of HEIGHTS, lowest first."""
+    widths = []
+    for height in HEIGHTS:
+        scene = ball_scene(height=height, light_radius=light_radius, technique=technique)
+        widths.append(penumbra_width(scene, shadow_only(scene)[0]))
+    return widths
+
+
 def check(condition, message):
     if not condition:
         print("FAIL: " + message)

@@ -65,10 +65,7 @@ soft_edge_checks("directional", visibility, visible, miss < st.BALL_RADIUS,
                  np.abs(miss - st.BALL_RADIUS) / pixel, truth)
 
 # 2. The penumbra widens as the ball rises.
-widths = []
-for height in (0.75, 1.5, 2.25):
-    scene = st.ball_scene(height=height, light_radius=0.4, technique="smoothies")
-    widths.append(st.penumbra_width(scene, st.shadow_only(scene)[0]))
+widths = st.penumbra_widths("smoothies")
 st.check(widths[0] < widths[1] < widths[2], "the soft edge widens as the ball rises: %s"
          % np.round(widths, 3).tolist())
 
