@@ -96,16 +96,23 @@ void main()
     // The four planes' masks; none hidden as soon as one plane leaves the
     // whole light outside (most samples of a region: the lit side), all as
     // long as every plane holds the whole light (the umbra).
+    // The edge planes' normals all point into the cone by one sign:
+    // dot(cross(q - p, r - p), o - p) is the same triple product for each
+    // edge, -side |b - a x c - a|. Taken from side, which the tolerance keeps
+    // clear of 0, rather than per edge: for a p almost in the triangle's
+    // plane the three products round to random signs, and planes that
+    // should bound a sliver of a cone would hold the whole light.
+    float inward = side > 0.0 ? -1.0 : 1.0;
     aliasfreePlaneMask planes[4];
-    planes[3] = aliasfreeSide(side > 0.0 ? -normal : normal, aliasfreeA, aliasfreeLight);
+    planes[3] = aliasfreeSide(inward * normal, aliasfreeA, aliasfreeLight);
     bool none = aliasfreeEmpty(planes[3]);
     bool all = aliasfreeFull(planes[3]);
     for (int i = 0; i < 3 && !none; ++i)
     {
-      vec3 q = corners[i], r = corners[(i + 1) % 3], o = corners[(i + 2) % 3];
-      vec3 m = cross(q - p, r - p);
+      vec3 q = corners[i], r = corners[(i + 1) % 3];
+      vec3 m = inward * cross(q - p, r - p);
       none = dot(m, m) <= 0.0; // p on an edge's line
-      planes[i] = aliasfreeSide(dot(m, o - p) >= 0.0 ? m : -m, p, aliasfreeLight);
+      planes[i] = aliasfreeSide(m, p, aliasfreeLight);
       none = none || aliasfreeEmpty(planes[i]);
       all = all && aliasfreeFull(planes[i]);
     }
