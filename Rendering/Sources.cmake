@@ -29,12 +29,18 @@ set(softshadows_rendering_framework_headers
   vtkShadowMapperCode.h
   vtkShadowMatrices.h)
 
+# Internals: a technique's helpers, not installed.
+set(softshadows_rendering_private_classes
+  vtkAliasFreeBentNormals)
+
 # Header-only internals.
 set(softshadows_rendering_private_headers
   vtkShadowSampling.h)
 
 # Shaders live in glsl/ and are embedded as C strings at build time.
 set(softshadows_rendering_shaders
+  vtkAliasFreeBendFS
+  vtkAliasFreeBendVS
   vtkAliasFreeCastersFS
   vtkAliasFreeCastersGS
   vtkAliasFreeCastersVS

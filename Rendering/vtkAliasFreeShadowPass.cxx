@@ -1,5 +1,6 @@
 #include "vtkAliasFreeShadowPass.h"
 
+#include "vtkAliasFreeBentNormals.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -227,6 +228,7 @@ std::string WithDefines(const std::string& source, const std::string& defines)
 struct vtkAliasFreeShadowPass::Internals
 {
   vtkShadowCasterCache<CasterTriangles> Casters;
+  vtkAliasFreeBentNormals Bent; // receivers' bent normals (section 6), when on
   vtkShadowCompute::Program Bounds, Count, ScanBlocks, ScanTop, ScanAdd, Scatter, Resolve,
     BuildLookup;
   vtkShadowCompute::Buffer CountsBuffer, OffsetsBuffer, BlocksBuffer, PixelsBuffer, SamplesBuffer,
@@ -869,11 +871,56 @@ bool vtkAliasFreeShadowPass::RenderFrustum(
 }
 
 //------------------------------------------------------------------------------
+vtkSoftShadowPass::ReceiverShading vtkAliasFreeShadowPass::GetReceiverShading(
+  const vtkShadowShaderSources& sources)
+{
+  ReceiverShading shading;
+  const int lights = static_cast<int>(this->Maps->GetLights().size());
+  if (!this->BentNormals || lights == 0 || !vtkAliasFreeBentNormals::Applies(sources))
+  {
+    return shading;
+  }
+  shading.VertexDeclarations = vtkAliasFreeBentNormals::VertexDeclarations(lights);
+  shading.VertexImplementation = vtkAliasFreeBentNormals::VertexImplementation();
+  shading.FragmentDeclarations = vtkAliasFreeBentNormals::FragmentDeclarations(lights);
+  for (int slot = 0; slot < lights; ++slot)
+  {
+    shading.PhongScales.push_back(vtkAliasFreeBentNormals::PhongScale(slot));
+  }
+  return shading;
+}
+
+//------------------------------------------------------------------------------
+void vtkAliasFreeShadowPass::SetReceiverShadingUniforms(vtkShaderProgram* program, vtkProp* prop)
+{
+  if (!this->BentNormals)
+  {
+    return;
+  }
+  // Bent towards each light's centre: its position, or the direction towards it.
+  std::vector<glm::vec4> lights;
+  for (const auto& light : this->Maps->GetLights())
+  {
+    lights.push_back(light.Directional ? glm::vec4(glm::vec3(-light.Direction), 0.0f)
+                                       : glm::vec4(glm::vec3(light.Position), 1.0f));
+  }
+  this->Internal->Bent.SetUniforms(program, prop, lights,
+    vtkOpenGLRenderWindow::SafeDownCast(this->Maps->GetRenderer()->GetRenderWindow()));
+}
+
+//------------------------------------------------------------------------------
+void vtkAliasFreeShadowPass::ReceiversDrawn()
+{
+  this->Internal->Bent.EndFrame(*this->Casters);
+}
+
+//------------------------------------------------------------------------------
 void vtkAliasFreeShadowPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);
   Internals& in = *this->Internal;
   in.Casters.Clear();
+  in.Bent.ReleaseGraphicsResources(w);
   for (auto* program : { &in.Bounds, &in.Count, &in.ScanBlocks, &in.ScanTop, &in.ScanAdd,
          &in.Scatter, &in.Resolve, &in.BuildLookup })
   {
@@ -908,6 +955,7 @@ void vtkAliasFreeShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RestrictToSilhouettes: " << this->RestrictToSilhouettes << "\n";
   os << indent << "Jitter: " << this->Jitter << "\n";
   os << indent << "MaximumFramesAccumulated: " << this->MaximumFramesAccumulated << "\n";
+  os << indent << "BentNormals: " << this->BentNormals << "\n";
   os << indent << "Seed: " << this->Seed << "\n";
   os << indent << "MemoryLimit: " << this->MemoryLimit << "\n";
   os << indent << "MemoryBytes: " << this->MemoryBytes << "\n";

@@ -159,6 +159,20 @@ public:
 
   ///@{
   /**
+   * Smooth shading without light leaks at shadow borders (section 6): the
+   * receivers' shading normals bent towards their faces', so that Phong
+   * shading fades to black before the triangles that face away from a light
+   * (which the exact shadow darkens) instead of ending in a jagged line of
+   * them. Changes VTK's own Phong shading of surfaces with point normals
+   * drawn by vtkOpenGLPolyDataMapper (vtkAliasFreeBentNormals). Default off.
+   */
+  vtkSetMacro(BentNormals, bool);
+  vtkGetMacro(BentNormals, bool);
+  vtkBooleanMacro(BentNormals, bool);
+  ///@}
+
+  ///@{
+  /**
    * Seed of the light samples' positions. Default 1.
    */
   vtkSetMacro(Seed, unsigned int);
@@ -197,6 +211,9 @@ protected:
   bool UsesScreenSpace() const override { return true; }
   std::string GetCameraPassImplementation() override;
   bool SupportsPointLights() const override { return true; }
+  ReceiverShading GetReceiverShading(const vtkShadowShaderSources& sources) override;
+  void SetReceiverShadingUniforms(vtkShaderProgram* program, vtkProp* prop) override;
+  void ReceiversDrawn() override;
 
   int Variant = Soft;
   int NumberOfLightSamples = 256;
@@ -206,6 +223,7 @@ protected:
   bool RestrictToSilhouettes = true;
   bool Jitter = true;
   int MaximumFramesAccumulated = 64;
+  bool BentNormals = false;
   unsigned int Seed = 1;
   double MemoryLimit = 1024.0;
   double MemoryBytes = 0.0;

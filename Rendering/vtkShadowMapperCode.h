@@ -48,17 +48,21 @@ inline bool MovesDepthOnly(const std::string& fragmentShader)
 /**
  * Scale light `n`'s contribution in `fragmentShader` by the GLSL float
  * `factor`: Phong diffuse and specular, PBR radiance (directional and
- * positional forms). Returns false if the shader has none of these lines,
- * so that the light would silently stay unshadowed.
+ * positional forms); Phong's also by `phong` when given, an expression that
+ * may read the light's diffuse cosine `df` (the mapper computes it just
+ * before). Returns false if the shader has none of these lines, so that the
+ * light would silently stay unshadowed.
  */
-inline bool ScaleLight(std::string& fragmentShader, int n, const std::string& factor)
+inline bool ScaleLight(
+  std::string& fragmentShader, int n, const std::string& factor, const std::string& phong = "")
 {
   const std::string color = "lightColor" + std::to_string(n);
+  const std::string phongFactor = phong.empty() ? factor : factor + " * " + phong;
   bool found = false;
   found |= vtkShaderProgram::Substitute(fragmentShader, "diffuse += (df * " + color + ");",
-    "diffuse += (df * " + factor + " * " + color + ");", false);
+    "diffuse += (df * " + phongFactor + " * " + color + ");", false);
   vtkShaderProgram::Substitute(fragmentShader, "specular += (sf * " + color + ");",
-    "specular += (sf * " + factor + " * " + color + ");", false);
+    "specular += (sf * " + phongFactor + " * " + color + ");", false);
   found |= vtkShaderProgram::Substitute(fragmentShader, "radiance = " + color + ";",
     "radiance = " + factor + " * " + color + ";", false);
   found |= vtkShaderProgram::Substitute(fragmentShader, "radiance = " + color + " * attenuation;",

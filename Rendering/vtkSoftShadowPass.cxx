@@ -183,6 +183,9 @@ public:
     // Shaders without lighting (no tags) are not shadowed: no word needed.
     vtkShadowShaderSources::Before(sources.Fragment, LightDec, ShadowDec);
     vtkShadowShaderSources::Before(sources.Fragment, LightImpl, ShadowImpl);
+    // The technique's vertex code (GetReceiverShading()), if any.
+    vtkShadowShaderSources::Before(sources.Vertex, LightDec, ShadowDec);
+    vtkShadowShaderSources::Before(sources.Vertex, LightImpl, ShadowImpl);
   }
 
   void PostReplace(vtkShadowShaderSources& sources) override;
@@ -237,6 +240,12 @@ void vtkSoftShadowPass::vtkReceiverStage::PostReplace(vtkShadowShaderSources& so
       dec << "uniform " << texture.Sampler << " " << texture.Name << ";\n";
     }
     dec << pass->GetVisibilityDeclarations() << "\n";
+    const ReceiverShading shading = pass->GetReceiverShading(sources);
+    dec << shading.FragmentDeclarations << "\n";
+    vtkShaderProgram::Substitute(
+      sources.Vertex, vtkShadowMapperCode::ShadowDec, shading.VertexDeclarations, false);
+    vtkShaderProgram::Substitute(
+      sources.Vertex, vtkShadowMapperCode::ShadowImpl, shading.VertexImplementation, false);
 
     impl << SurfaceCode(fragmentShader);
     if (pass->UsesScreenSpace())
@@ -251,8 +260,8 @@ void vtkSoftShadowPass::vtkReceiverStage::PostReplace(vtkShadowShaderSources& so
            << ";\n"
            << "  float vtkShadowFactor" << n << " = mix(1.0, vtkShadowVisibility" << n
            << ", vtkShadowAttenuation[" << i << "]);\n";
-      if (!vtkShadowMapperCode::ScaleLight(
-            fragmentShader, n, "vtkShadowFactor" + std::to_string(n)))
+      if (!vtkShadowMapperCode::ScaleLight(fragmentShader, n, "vtkShadowFactor" + std::to_string(n),
+            slot < shading.PhongScales.size() ? shading.PhongScales[slot] : ""))
       {
         unscaled += (unscaled.empty() ? "" : ", ") + std::to_string(n);
       }
@@ -277,6 +286,8 @@ void vtkSoftShadowPass::vtkReceiverStage::PostReplace(vtkShadowShaderSources& so
   {
     vtkShaderProgram::Substitute(fragmentShader, vtkShadowMapperCode::ShadowDec, "", false);
     vtkShaderProgram::Substitute(fragmentShader, vtkShadowMapperCode::ShadowImpl, "", false);
+    vtkShaderProgram::Substitute(sources.Vertex, vtkShadowMapperCode::ShadowDec, "", false);
+    vtkShaderProgram::Substitute(sources.Vertex, vtkShadowMapperCode::ShadowImpl, "", false);
   }
 
   if (pass->ShadowOnlyLight >= 0)
@@ -289,7 +300,7 @@ void vtkSoftShadowPass::vtkReceiverStage::PostReplace(vtkShadowShaderSources& so
 }
 
 //------------------------------------------------------------------------------
-void vtkSoftShadowPass::vtkReceiverStage::SetUniforms(vtkShaderProgram* program, vtkProp*)
+void vtkSoftShadowPass::vtkReceiverStage::SetUniforms(vtkShaderProgram* program, vtkProp* prop)
 {
   vtkSoftShadowPass* pass = this->Pass;
   // Only programs with the shadow term; a visibility that does not depend
@@ -344,6 +355,7 @@ void vtkSoftShadowPass::vtkReceiverStage::SetUniforms(vtkShaderProgram* program,
     program->SetUniformi(texture.Name.c_str(), texture.Texture->GetTextureUnit());
   }
   pass->SetVisibilityUniforms(program);
+  pass->SetReceiverShadingUniforms(program, prop);
 }
 
 //------------------------------------------------------------------------------
@@ -536,6 +548,7 @@ void vtkSoftShadowPass::RenderReceivers(const vtkRenderState* s, bool screenSpac
   this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
   hooks->Detach(s);
   hooks->SetStage(nullptr);
+  this->ReceiversDrawn();
   if (prePass)
   {
     steps->SetOpaquePass(opaque);

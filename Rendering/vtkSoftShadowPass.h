@@ -57,6 +57,8 @@ class vtkLight;
 class vtkDualDepthPeelingPass;
 class vtkOpenGLRenderWindow;
 class vtkOrderIndependentTranslucentPass;
+class vtkProp;
+class vtkShadowShaderSources;
 class vtkRenderStepsPass;
 class vtkRenderer;
 class vtkTranslucentPass;
@@ -343,6 +345,34 @@ protected:
    * differ. Default: none.
    */
   virtual std::vector<ReceiverTexture> GetReceiverTextures() { return {}; }
+
+  /// What a technique changes in a receiver's shading besides the shadow
+  /// (e.g. bent normals): code for the vertex shader (declarations; and
+  /// statements in main, before the mapper's lighting code, that may read
+  /// `vertexMC`), declarations for the fragment shader, and per light slot
+  /// an expression scaling that light's Phong diffuse and specular, which
+  /// may read its diffuse cosine `df`. Empty strings: nothing.
+  struct ReceiverShading
+  {
+    std::string VertexDeclarations;
+    std::string VertexImplementation;
+    std::string FragmentDeclarations;
+    std::vector<std::string> PhongScales;
+  };
+
+  /**
+   * The technique's change to the shading of the receiver whose shaders are
+   * `sources` (its mapper and prop), asked each time they are built.
+   * Default: none.
+   */
+  virtual ReceiverShading GetReceiverShading(const vtkShadowShaderSources&) { return {}; }
+
+  /**
+   * Upload that change's uniforms (and bind its textures) for `prop`, each
+   * time a receiver is drawn; ReceiversDrawn() follows the last, each frame.
+   */
+  virtual void SetReceiverShadingUniforms(vtkShaderProgram*, vtkProp*) {}
+  virtual void ReceiversDrawn() {}
 
   /**
    * Radius, in texels, of the square PCF kernel the framework's hard lookup

@@ -15,6 +15,7 @@ softshadows_rendering_shaders(shader_sources shader_headers
 list(TRANSFORM softshadows_filters_classes PREPEND "Module/")
 list(TRANSFORM softshadows_filters_private_classes PREPEND "Module/")
 list(TRANSFORM softshadows_filters_private_headers PREPEND "Module/")
+list(TRANSFORM softshadows_rendering_private_classes PREPEND "Rendering/")
 list(TRANSFORM softshadows_rendering_private_headers PREPEND "Rendering/")
 list(TRANSFORM softshadows_rendering_classes PREPEND "Rendering/")
 list(TRANSFORM softshadows_rendering_framework_classes PREPEND "Rendering/")
@@ -24,7 +25,7 @@ vtk_module_add_module(VTK::RenderingSoftShadows
   SOURCES ${shader_sources}
   NOWRAP_CLASSES ${softshadows_rendering_framework_classes}
   NOWRAP_HEADERS ${softshadows_rendering_framework_headers}
-  PRIVATE_CLASSES ${softshadows_filters_private_classes}
+  PRIVATE_CLASSES ${softshadows_filters_private_classes} ${softshadows_rendering_private_classes}
   PRIVATE_HEADERS ${shader_headers} "${shim}" ${softshadows_filters_private_headers}
     ${softshadows_rendering_private_headers})
 vtk_module_include(VTK::RenderingSoftShadows PRIVATE Module Rendering)

@@ -475,6 +475,10 @@ const std::vector<Technique>& Techniques()
           Range::Between(1, 1024), "soft, jitter: most frames averaged",
           &vtkAliasFreeShadowPass::SetMaximumFramesAccumulated,
           &vtkAliasFreeShadowPass::GetMaximumFramesAccumulated),
+        Bind<vtkAliasFreeShadowPass, bool>("bent_normals", ValueType::Boolean, Range::Any(),
+          "smooth shading without light leaks at shadow borders: surfaces' Phong normals bent "
+          "towards their faces' so that they darken before the faces turned from the light",
+          &vtkAliasFreeShadowPass::SetBentNormals, &vtkAliasFreeShadowPass::GetBentNormals),
         Bind<vtkAliasFreeShadowPass, double>("memory_limit", ValueType::Number,
           Range::Between(1.0, 65536.0),
           "MiB the lists, masks and tables may take; a frame needing more is drawn unshadowed",

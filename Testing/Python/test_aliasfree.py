@@ -5,7 +5,8 @@ spherical light on a ball, a fence, a knot and a self-shadowing blob, for
 every number of light samples, under spot, point and directional lights,
 and inside a room under a point light; penumbrae that widen as the ball rises;
 light shapes and their scaling; penumbrae restricted to the silhouettes as
-computed everywhere; temporal jitter converging while nothing moves; bad
+computed everywhere; temporal jitter converging while nothing moves; bent
+normals smoothing a coarse sphere's terminator; bad
 cases (a light inside a caster, a frame over its memory limit, a 2048x2048
 window, a million-triangle caster, no lights, odd meshes) drawn with clear
 errors or right images."""
@@ -230,7 +231,60 @@ st.check(st.penumbra_width(wide, st.shadow_only(wide)[0]) >
          1.5 * st.penumbra_width(scene, sphere),
          "an ellipsoid three times as long along x widens the penumbra along x")
 
-# 5. Bad cases. A spot light inside the ball: everything it lights outside
+# 5. Bent normals (section 6): a ten-sided sphere lit from the side. Exact
+# shadows blacken the triangles that face away from the light while Phong's
+# normals still light their lit neighbours up to the shared edge: a jump
+# from dark to lit along the terminator. Bent, shading fades to nearly black
+# before it; the lit side keeps Phong; the shadow itself does not change;
+# on a finely tessellated sphere the shading hardly changes.
+def bend_scene(variant, bent, light_type, resolution=10):
+    light = {"type": light_type, "position": [6.0, 0.6, 0.0], "radius": 0.3}
+    if light_type == "spot":
+        light.update({"focal_point": [0.0, 0.6, 0.0], "cone_angle": 20})
+    return {"name": "bend", "size": list(SIZE),
+            "camera": {"position": [0.0, 0.6, 4.0], "focal_point": [0.0, 0.6, 0.0],
+                       "view_angle": 30},
+            "lights": [light],
+            "actors": [{"source": "sphere", "params": {"radius": 0.8, "resolution": resolution},
+                        "position": [0.0, 0.6, 0.0]}],
+            "shadows": {"technique": "aliasfree:" + variant,
+                        "aliasfree": {"bent_normals": bent}}}
+
+
+def rendered(scene):
+    """The frame's brightest channel, in [0, 1]."""
+    with tempfile.TemporaryDirectory() as folder:
+        scene_file = os.path.join(folder, "scene.json")
+        with open(scene_file, "w") as f:
+            json.dump(scene, f)
+        output = os.path.join(folder, "out.png")
+        st.run(["render", scene_file, "--output", output])
+        return st.read_png(output)[:, :, :3].max(axis=2) / 255.0
+
+
+for variant, light_type in (("hard", "spot"), ("soft", "point")):
+    jumps, tops, shadows = {}, {}, {}
+    for bent in (False, True):
+        scene = bend_scene(variant, bent, light_type)
+        image = rendered(scene)
+        shadows[bent], geometry = st.shadow_only(scene)
+        dark = geometry & (image < 2.5 / 255.0)
+        beside_dark = np.zeros_like(dark)
+        for dy, dx in ((0, 1), (0, -1), (1, 0), (-1, 0)):
+            beside_dark |= np.roll(np.roll(dark, dy, axis=0), dx, axis=1)
+        tops[bent] = image[geometry].max()
+        # Lit pixels next to black ones, away from the outline: the terminator.
+        jumps[bent] = image[st.interior(geometry, 2) & ~dark & beside_dark].max() / tops[bent]
+    st.check(jumps[False] > 0.12 and jumps[True] < 0.08 and abs(tops[True] - tops[False]) < 0.01
+             and np.array_equal(shadows[True], shadows[False]),
+             "%s, %s light, bent normals: the terminator's jump from black %.3f of the brightest "
+             "(%.3f unbent), the brightest %.3f (%.3f), the shadow the same"
+             % (variant, light_type, jumps[True], jumps[False], tops[True], tops[False]))
+fine = [rendered(bend_scene("soft", bent, "spot", resolution=64)) for bent in (False, True)]
+change = float(np.abs(fine[1] - fine[0]).mean())
+st.check(change < 0.005, "a 64-sided sphere's shading hardly bent (mean change %.4f)" % change)
+
+# 6. Bad cases. A spot light inside the ball: everything it lights outside
 # the ball is in shadow.
 scene = st.ball_scene(height=1.0, light_radius=0.1, technique="aliasfree", size=SIZE,
                       map_size=256)
