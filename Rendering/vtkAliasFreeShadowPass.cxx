@@ -628,7 +628,13 @@ bool vtkAliasFreeShadowPass::RenderFrustum(
       std::vector<glm::dvec3> points;
       if (light.Directional || this->LightShape == Disc)
       {
-        for (const auto& d : vtkShadowSampling::StratifiedDisc(n, this->Seed))
+        // Exactly n strata: the most nearly square grid whose sides divide n.
+        int columns = static_cast<int>(std::sqrt(static_cast<double>(n)));
+        while (n % columns != 0)
+        {
+          --columns;
+        }
+        for (const auto& d : vtkShadowSampling::StratifiedDisc(columns, n / columns, this->Seed))
         {
           points.emplace_back(d, 0.0);
         }
@@ -648,7 +654,6 @@ bool vtkAliasFreeShadowPass::RenderFrustum(
             0.0);
         }
       }
-      points.resize(n, glm::dvec3(0.0)); // StratifiedDisc rounds to a square count
       std::vector<float> packed(4 * static_cast<size_t>(n), 0.0f);
       for (int i = 0; i < n; ++i)
       {

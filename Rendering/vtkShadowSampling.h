@@ -83,6 +83,25 @@ inline glm::dvec2 ConcentricDisc(double u, double v)
   return b * glm::dvec2(std::sin(quarterPi * a / b), std::cos(quarterPi * a / b));
 }
 
+/// Jittered columns x rows stratification of the unit disc (the concentric
+/// map of the square's strata).
+inline std::vector<glm::dvec2> StratifiedDisc(int columns, int rows, unsigned int seed)
+{
+  std::mt19937 generator(seed);
+  std::vector<glm::dvec2> samples;
+  samples.reserve(static_cast<size_t>(columns) * rows);
+  for (int j = 0; j < rows; ++j)
+  {
+    for (int i = 0; i < columns; ++i)
+    {
+      const double u = (i + Uniform(generator)) / columns;
+      const double v = (j + Uniform(generator)) / rows;
+      samples.push_back(ConcentricDisc(u, v));
+    }
+  }
+  return samples;
+}
+
 /// Jittered k x k stratification of the unit disc, k = floor(sqrt(count));
 /// one sample at the centre when k is 1.
 inline std::vector<glm::dvec2> StratifiedDisc(int count, unsigned int seed)
@@ -92,19 +111,7 @@ inline std::vector<glm::dvec2> StratifiedDisc(int count, unsigned int seed)
   {
     return { glm::dvec2(0.0) };
   }
-  std::mt19937 generator(seed);
-  std::vector<glm::dvec2> samples;
-  samples.reserve(static_cast<size_t>(k) * k);
-  for (int j = 0; j < k; ++j)
-  {
-    for (int i = 0; i < k; ++i)
-    {
-      const double u = (i + Uniform(generator)) / k;
-      const double v = (j + Uniform(generator)) / k;
-      samples.push_back(ConcentricDisc(u, v));
-    }
-  }
-  return samples;
+  return StratifiedDisc(k, k, seed);
 }
 
 /// The radical inverse of i in `base`: Halton's sequence.
