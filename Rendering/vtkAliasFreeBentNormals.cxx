@@ -23,6 +23,8 @@
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 
@@ -85,29 +87,23 @@ void Build(vtkPolyData* data, Adjacency& adjacency, vtkOpenGLRenderWindow* conte
   {
     return;
   }
-  // Counting sort: each point's entries, then the normals at their offsets.
+  // Each face's normal once (none for faces of no area or bad ids), then a
+  // counting sort: each point's entries, the normals at their offsets.
+  std::vector<std::array<float, 4>> faceNormals;
+  std::vector<bool> kept;
   std::vector<int> offsets(static_cast<size_t>(n) + 1, 0);
-  float normal[4];
-  auto valid = [&](vtkIdType count, const vtkIdType* ids)
-  {
-    for (vtkIdType k = 0; k < count; ++k)
-    {
-      if (ids[k] < 0 || ids[k] >= n)
-      {
-        return false;
-      }
-    }
-    return FaceNormal(points, count, ids, normal);
-  };
   ForEachFace(data,
     [&](vtkIdType count, const vtkIdType* ids)
     {
-      if (valid(count, ids))
+      std::array<float, 4> normal;
+      const bool keep =
+        std::all_of(ids, ids + count, [n](vtkIdType id) { return id >= 0 && id < n; }) &&
+        FaceNormal(points, count, ids, normal.data());
+      kept.push_back(keep);
+      faceNormals.push_back(normal);
+      for (vtkIdType k = 0; keep && k < count; ++k)
       {
-        for (vtkIdType k = 0; k < count; ++k)
-        {
-          ++offsets[ids[k] + 1];
-        }
+        ++offsets[ids[k] + 1];
       }
     });
   for (vtkIdType i = 0; i < n; ++i)
@@ -121,16 +117,16 @@ void Build(vtkPolyData* data, Adjacency& adjacency, vtkOpenGLRenderWindow* conte
   }
   std::vector<float> normals(4 * static_cast<size_t>(entries));
   std::vector<int> next(offsets.begin(), offsets.end() - 1);
+  size_t face = 0;
   ForEachFace(data,
     [&](vtkIdType count, const vtkIdType* ids)
     {
-      if (valid(count, ids))
+      for (vtkIdType k = 0; kept[face] && k < count; ++k)
       {
-        for (vtkIdType k = 0; k < count; ++k)
-        {
-          std::memcpy(&normals[4 * static_cast<size_t>(next[ids[k]]++)], normal, sizeof normal);
-        }
+        std::memcpy(&normals[4 * static_cast<size_t>(next[ids[k]]++)], faceNormals[face].data(),
+          sizeof(float) * 4);
       }
+      ++face;
     });
 
   adjacency.OffsetsBuffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();

@@ -24,18 +24,25 @@ void aliasfreeBend(vec4 vertex)
     first = texelFetch(aliasfreeBendOffsets, gl_VertexID).r;
     last = texelFetch(aliasfreeBendOffsets, gl_VertexID + 1).r;
   }
-  vec3 p = (aliasfreeBendModelToWorld * vertex).xyz / (aliasfreeBendModelToWorld * vertex).w;
+  vec4 world = aliasfreeBendModelToWorld * vertex;
+  vec3 p = world.xyz / world.w;
+  vec3 towards[ALIASFREE_BEND_LIGHTS];
   for (int i = 0; i < ALIASFREE_BEND_LIGHTS; ++i)
   {
     vec4 light = aliasfreeBendLights[i];
-    vec3 l = normalize(light.w > 0.5 ? light.xyz - p : light.xyz);
+    towards[i] = normalize(light.w > 0.5 ? light.xyz - p : light.xyz);
     // No faces (points, lines): nothing bends, (1, -1) leaves Phong alone.
-    vec2 range = vec2(1.0, -1.0);
-    for (int k = first; k < last; ++k)
+    aliasfreeBendVSOutput[i] = vec2(1.0, -1.0);
+  }
+  // Each face's normal into the world once, against every light.
+  for (int k = first; k < last; ++k)
+  {
+    vec3 n = normalize(aliasfreeBendNormalToWorld * texelFetch(aliasfreeBendNormals, k).xyz);
+    for (int i = 0; i < ALIASFREE_BEND_LIGHTS; ++i)
     {
-      float d = dot(l, normalize(aliasfreeBendNormalToWorld * texelFetch(aliasfreeBendNormals, k).xyz));
-      range = k == first ? vec2(d) : vec2(min(range.x, d), max(range.y, d));
+      float d = dot(towards[i], n);
+      vec2 range = aliasfreeBendVSOutput[i];
+      aliasfreeBendVSOutput[i] = k == first ? vec2(d) : vec2(min(range.x, d), max(range.y, d));
     }
-    aliasfreeBendVSOutput[i] = range;
   }
 }
