@@ -4,6 +4,7 @@ set(softshadows_filters_classes
   vtkEdgeAdjacencyFilter
   vtkFenceSource
   vtkLightSilhouetteFilter
+  vtkSoftShadowsMeshCheck
   vtkTopologyAwareMeshFilter)
 # Internal helpers (OpenMesh and the silhouette hierarchy live here, out of the
 # public headers): compiled in, neither installed nor wrapped.

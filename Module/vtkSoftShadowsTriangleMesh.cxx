@@ -10,51 +10,17 @@
 #include "vtkPolyData.h"
 #include "vtkPolygon.h"
 #include "vtkSMPTools.h"
+#include "vtkSoftShadowsMeshCheck.h"
 
 #include <algorithm> // for std::max, std::swap
 #include <atomic>    // for std::atomic
-#include <cmath>     // for std::isfinite
 #include <cstring>   // for std::memcpy
+#include <string>    // for std::string
 
 namespace vtksoftshadows
 {
 namespace
 {
-// Finds the first non-finite point.
-struct CheckPoints
-{
-  CheckPoints(const TriangleMesh& mesh, vtkIdType numPoints)
-    : Mesh(mesh)
-    , FirstBad(numPoints)
-  {
-  }
-
-  const TriangleMesh& Mesh;
-  std::atomic<vtkIdType> FirstBad;
-
-  template <typename T>
-  void Check(const T* x, vtkIdType begin, vtkIdType end)
-  {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      const double p[3] = { double(x[3 * i]), double(x[3 * i + 1]), double(x[3 * i + 2]) };
-      if (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))
-      {
-        continue;
-      }
-      vtkIdType bad = this->FirstBad.load();
-      while (i < bad && !this->FirstBad.compare_exchange_weak(bad, i))
-      {
-      }
-    }
-  }
-
-  void operator()(vtkIdType begin, vtkIdType end)
-  {
-    this->Mesh.VisitPoints([&](const auto* x) { this->Check(x, begin, end); });
-  }
-};
-
 // Appends faces to the mesh, dropping those that repeat a point id.
 class FaceWriter
 {
@@ -271,7 +237,16 @@ bool ExtractTriangles(vtkPolyData* input, vtkAlgorithm* filter, TriangleMesh& me
     return false;
   }
 
-  // Points read in place; a NaN would make every light test meaningless.
+  // Ids out of range would be read blindly below; a NaN would make every
+  // light test meaningless.
+  const std::string problem = vtkSoftShadowsMeshCheck::FindProblem(input);
+  if (!problem.empty())
+  {
+    vtkErrorWithObjectMacro(filter, << problem.c_str());
+    return false;
+  }
+
+  // Points read in place.
   mesh.NumberOfPoints = numPoints;
   mesh.PointArray = input->GetPoints()->GetData();
   if (auto* f = vtkFloatArray::FastDownCast(mesh.PointArray))
@@ -291,20 +266,6 @@ bool ExtractTriangles(vtkPolyData* input, vtkAlgorithm* filter, TriangleMesh& me
     }
     mesh.DoublePoints = mesh.ConvertedPoints.data();
   }
-  CheckPoints check(mesh, numPoints);
-  vtkSMPTools::For(0, numPoints, check);
-  const vtkIdType bad = check.FirstBad.load();
-  if (bad < numPoints)
-  {
-    double p[3];
-    mesh.PointArray->GetTuple(bad, p);
-    vtkErrorWithObjectMacro(filter,
-      "Point " << bad << " of the input is not finite (" << p[0] << ", " << p[1] << ", " << p[2]
-               << "): NaN and infinite coordinates are not supported; remove them first.");
-    mesh = TriangleMesh();
-    return false;
-  }
-
   if (numVerts > 0 || numLines > 0)
   {
     vtkWarningWithObjectMacro(filter,

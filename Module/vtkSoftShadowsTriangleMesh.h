@@ -5,8 +5,9 @@
  * vtkTopologyAwareMeshFilter, vtkEdgeAdjacencyFilter and vtkLightSilhouetteFilter all
  * start from the same reading of their input: polygons (triangulated) and triangle
  * strips (decomposed) become faces; vertices and lines are ignored, with one warning;
- * faces that repeat a point id are dropped, with one warning; non-finite points and
- * inputs without faces are errors. Face normals are computed by one function, in
+ * faces that repeat a point id are dropped, with one warning; inputs without faces
+ * and those vtkSoftShadowsMeshCheck refuses (point ids out of range, non-finite
+ * points) are errors. Face normals are computed by one function, in
  * double precision, so that every filter (and both silhouette searches) sees the
  * very same numbers.
  *

@@ -1,5 +1,6 @@
 // The three mesh-topology filters on bad or unusual input: empty meshes, NaN
-// and infinite points, degenerate and zero-area triangles, duplicate points,
+// and infinite points, point ids out of range, broken cell arrays and short
+// attribute arrays, degenerate and zero-area triangles, duplicate points,
 // vertices and lines among the polygons, several parts, inconsistently
 // oriented faces, polygons and strips to triangulate, bad lights, points that
 // are neither float nor double. No crash; clear errors, warnings said once,
@@ -9,6 +10,7 @@
 
 #include "vtkEdgeAdjacencyFilter.h"
 #include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
 #include "vtkLightSilhouetteFilter.h"
 #include "vtkPointData.h"
@@ -131,6 +133,52 @@ void TestNonFinite()
   auto unused = Tetrahedron();
   unused->GetPoints()->InsertNextPoint(nan, nan, nan);
   ExpectError(unused, "not finite", "unused NaN point");
+}
+
+// Point ids a mesh does not have, offsets that overrun the connectivity and
+// attributes shorter than the points: refused before any is read.
+void TestBrokenCells()
+{
+  auto pastEnd = MakeMesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, { { 0, 1, 2 }, { 0, 1, 3 } });
+  ExpectError(pastEnd, "Cell 1 (a polygon) uses point id 3, but the mesh has 3 points",
+    "id = number of points");
+  auto negative = MakeMesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, { { 0, -1, 2 } });
+  ExpectError(negative, "uses point id -1", "negative id");
+  auto far = MakeMesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, { { 0, 1, 2000000000 } });
+  ExpectError(far, "uses point id 2000000000", "id far out");
+
+  // A strip's bad id is named with the strip's cell id (after the polygons).
+  auto strip = Tetrahedron();
+  vtkNew<vtkCellArray> strips;
+  const vtkIdType ids[4] = { 0, 1, 2, 7 };
+  strips->InsertNextCell(4, ids);
+  strip->SetStrips(strips);
+  ExpectError(strip, "Cell 4 (a triangle strip) uses point id 7", "strip id out of range");
+
+  // Offsets that claim more ids than the connectivity holds.
+  auto overrun = Tetrahedron();
+  vtkNew<vtkIdTypeArray> offsets;
+  vtkNew<vtkIdTypeArray> connectivity;
+  for (vtkIdType value : { 0, 3, 9 })
+  {
+    offsets->InsertNextValue(value);
+  }
+  for (vtkIdType value : { 0, 1, 2, 0, 1, 3 })
+  {
+    connectivity->InsertNextValue(value);
+  }
+  vtkNew<vtkCellArray> polys;
+  polys->SetData(offsets, connectivity);
+  overrun->SetPolys(polys);
+  ExpectError(overrun, "offsets do not describe their connectivity", "offsets overrun");
+
+  auto shortNormals = Tetrahedron();
+  vtkNew<vtkFloatArray> normals;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  normals->SetNumberOfTuples(2);
+  shortNormals->GetPointData()->SetNormals(normals);
+  ExpectError(shortNormals, "point data array 'Normals' has 2 values", "short point array");
 }
 
 void TestBadLight()
@@ -372,6 +420,7 @@ int TestMeshFiltersRobustness(int, char*[])
 {
   TestEmpty();
   TestNonFinite();
+  TestBrokenCells();
   TestBadLight();
   TestDegenerate();
   TestDuplicatePoints();
