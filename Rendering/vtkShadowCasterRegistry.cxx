@@ -11,6 +11,7 @@
 #include "vtkCompositePolyDataMapper2.h"
 #include "vtkDataObjectTree.h"
 #include "vtkDataObjectTreeIterator.h"
+#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
@@ -19,9 +20,12 @@
 #include "vtkRenderer.h"
 #include "vtkShadowMatrices.h"
 #include "vtkSmartPointer.h"
+#include "vtkSoftShadowsMeshCheck.h"
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
+
+#include <string> // for std::string
 
 //------------------------------------------------------------------------------
 glm::dvec3 vtkShadowCaster::PointToModel(const glm::dvec3& world) const
@@ -69,7 +73,34 @@ void vtkShadowCasterRegistry::AddBlocks(vtkDataObject* node, bool visible, unsig
     vtkShadowCaster block = actor;
     block.Data = data;
     block.FlatIndex = index;
-    this->Casters.push_back(block);
+    this->AddCaster(block);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowCasterRegistry::AddCaster(const vtkShadowCaster& caster)
+{
+  Checked& check = this->Checks[caster.Data];
+  if (check.Data != caster.Data || check.Time != caster.Data->GetMTime())
+  {
+    check.Data = caster.Data;
+    check.Time = caster.Data->GetMTime();
+    const std::string problem = vtkSoftShadowsMeshCheck::FindProblem(caster.Data);
+    check.Valid = problem.empty();
+    if (!check.Valid)
+    {
+      vtkErrorWithObjectMacro(caster.Actor,
+        "casts no shadow: its mapper's input is not a mesh the shadow techniques can read: "
+          << problem.c_str());
+    }
+  }
+  if (check.Valid)
+  {
+    this->Casters.push_back(caster);
+  }
+  else
+  {
+    ++this->Refused;
   }
 }
 
@@ -78,6 +109,10 @@ void vtkShadowCasterRegistry::Update(vtkRenderer* renderer)
 {
   this->Props.clear();
   this->Casters.clear();
+  for (auto it = this->Checks.begin(); it != this->Checks.end();)
+  {
+    it = it->second.Data ? std::next(it) : this->Checks.erase(it);
+  }
   vtkCollectionSimpleIterator it;
   vtkPropCollection* props = renderer->GetViewProps();
   props->InitTraversal(it);
@@ -91,8 +126,22 @@ void vtkShadowCasterRegistry::Update(vtkRenderer* renderer)
     {
       continue;
     }
-    this->Props.push_back(prop);
+    // A prop without bounds yet (a mapper without input) draws nothing: the
+    // renderer's culler leaves it out, and so do light-space draws, where
+    // VTK's mapper would report its missing input every time.
+    const double* bounds = prop->GetBounds();
+    if (bounds && !vtkMath::AreBoundsInitialized(bounds))
+    {
+      continue;
+    }
+    // A prop with a refused part casts nothing: light-space draws would
+    // send the bad ids to the GPU through VTK's mapper.
+    const int refused = this->Refused;
     this->AddActors(prop);
+    if (this->Refused == refused)
+    {
+      this->Props.push_back(prop);
+    }
   }
 }
 
@@ -152,7 +201,7 @@ void vtkShadowCasterRegistry::AddActor(vtkProp* prop, vtkActor* actor, vtkMatrix
   if (auto* data = vtkPolyData::SafeDownCast(input))
   {
     caster.Data = data;
-    this->Casters.push_back(caster);
+    this->AddCaster(caster);
     return;
   }
   auto* compositeMapper = vtkCompositePolyDataMapper2::SafeDownCast(mapper);

@@ -17,6 +17,10 @@
  * vtkLightSilhouetteFilter. Glyph mappers' instances are not reached: their
  * props still cast through GetProps(). Light and camera actors (vtkLightActor,
  * vtkCameraActor), pictures of the scene's lights and cameras, cast nothing.
+ * Props without bounds (a mapper without input) are left out, as the
+ * renderer's culler leaves them out. Polydata that vtkSoftShadowsMeshCheck refuses (point ids out
+ * of range, non-finite points) casts nothing either, with one error naming the actor each time the
+ * data changes.
  */
 
 #ifndef vtkShadowCasterRegistry_h
@@ -82,6 +86,8 @@ public:
   static vtkSmartPointer<vtkPolyData> MergedFaces(vtkPolyData* data);
 
 private:
+  /// Adds `caster` unless vtkSoftShadowsMeshCheck refuses its data.
+  void AddCaster(const vtkShadowCaster& caster);
   void AddActors(vtkProp* prop);
   void AddActor(vtkProp* prop, vtkActor* actor, vtkMatrix4x4* matrix);
   void AddBlocks(vtkDataObject* node, bool visible, unsigned int& flatIndex,
@@ -89,6 +95,16 @@ private:
 
   std::vector<vtkProp*> Props;
   std::vector<vtkShadowCaster> Casters;
+
+  /// Each polydata's check, kept until it is modified: refused and reported once.
+  struct Checked
+  {
+    vtkWeakPointer<vtkPolyData> Data;
+    vtkMTimeType Time = 0;
+    bool Valid = false;
+  };
+  std::map<const vtkPolyData*, Checked> Checks;
+  int Refused = 0; ///< casters refused, in all
 };
 
 /**
