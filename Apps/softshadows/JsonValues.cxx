@@ -57,9 +57,50 @@ void CheckNumbers(const Json& value, std::size_t count, const Range& range, cons
 }
 
 //------------------------------------------------------------------------------
+std::string Printable(const std::string& text, std::size_t limit)
+{
+  std::string out;
+  std::size_t shown = 0;
+  std::size_t i = 0;
+  for (; i < text.size() && shown < limit; ++shown)
+  {
+    const auto c = static_cast<unsigned char>(text[i]);
+    // A whole UTF-8 sequence is one character; anything else a byte.
+    std::size_t length = c < 0x80 ? 1
+      : (c >> 5) == 0x6           ? 2
+      : (c >> 4) == 0xE           ? 3
+      : (c >> 3) == 0x1E          ? 4
+                                  : 0;
+    for (std::size_t k = 1; k < length; ++k)
+    {
+      if (i + k >= text.size() || (static_cast<unsigned char>(text[i + k]) >> 6) != 0x2)
+      {
+        length = 0;
+      }
+    }
+    if (length == 0 || c < 0x20 || c == 0x7F)
+    {
+      static const char digits[] = "0123456789abcdef";
+      out += "\\x";
+      out += digits[c >> 4];
+      out += digits[c & 0xF];
+      ++i;
+      continue;
+    }
+    out.append(text, i, length);
+    i += length;
+  }
+  if (i < text.size())
+  {
+    out += "... (" + std::to_string(text.size() - i) + " more bytes)";
+  }
+  return out;
+}
+
+//------------------------------------------------------------------------------
 InputError::InputError(std::string where, const std::string& problem)
-  : std::runtime_error(problem)
-  , Location(std::move(where))
+  : std::runtime_error(Printable(problem))
+  , Location(Printable(where))
 {
 }
 

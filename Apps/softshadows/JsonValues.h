@@ -24,8 +24,16 @@ using Json = nlohmann::json;
 using Vector3 = std::array<double, 3>;
 
 /**
+ * `text` made fit for one line of a message: control characters and bytes
+ * that are not UTF-8 written as \xNN, and anything past `limit` characters
+ * cut, saying how much was left out.
+ */
+std::string Printable(const std::string& text, std::size_t limit = 200);
+
+/**
  * A mistake in what the user gave: a scene field, an option or its value.
- * Where() is the field path or option name, what() the problem.
+ * Where() is the field path or option name, what() the problem; both
+ * Printable().
  */
 class InputError : public std::runtime_error
 {

@@ -1,6 +1,6 @@
 #include "SceneBuilder.h"
 
-#include "MessageCapture.h"
+#include "MeshFiles.h"
 #include "Sources.h"
 
 #include "vtkSoftShadowPass.h"
@@ -9,8 +9,6 @@
 #include <vtkCamera.h>
 #include <vtkLight.h>
 #include <vtkNew.h>
-#include <vtkOBJReader.h>
-#include <vtkPLYReader.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
@@ -18,8 +16,6 @@
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
-#include <vtkSTLReader.h>
-#include <vtkXMLPolyDataReader.h>
 
 #include <X11/Xlib.h>
 
@@ -33,48 +29,17 @@ namespace softshadows
 {
 namespace
 {
-template <typename Reader>
-vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& file)
-{
-  auto reader = vtkSmartPointer<Reader>::New();
-  reader->SetFileName(file.c_str());
-  return reader;
-}
-
 vtkSmartPointer<vtkPolyData> ReadMesh(const SceneActor& actor)
 {
-  const std::string name = actor.File.string();
-  vtkSmartPointer<vtkAlgorithm> reader;
-  switch (actor.Format)
+  try
   {
-    case MeshFormat::VTP:
-      reader = MakeReader<vtkXMLPolyDataReader>(name);
-      break;
-    case MeshFormat::OBJ:
-      reader = MakeReader<vtkOBJReader>(name);
-      break;
-    case MeshFormat::PLY:
-      reader = MakeReader<vtkPLYReader>(name);
-      break;
-    case MeshFormat::STL:
-      reader = MakeReader<vtkSTLReader>(name);
-      break;
+    return ReadMeshFile(actor.File, actor.Format);
   }
-
-  const std::string where = FieldPath(actor.Path, "file");
-  std::string problem;
-  {
-    MessageCapture messages;
-    reader->Update();
-    problem = messages.FirstMessage();
-  }
-  vtkPolyData* mesh = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
-  if (!mesh || mesh->GetNumberOfPolys() + mesh->GetNumberOfStrips() == 0)
+  catch (const std::runtime_error& error)
   {
     throw InputError(
-      where, "cannot read " + name + ": " + (problem.empty() ? "no polygons in it" : problem));
+      FieldPath(actor.Path, "file"), "cannot read " + actor.File.string() + ": " + error.what());
   }
-  return mesh;
 }
 
 // Meshes without point normals would be drawn faceted; give them smooth

@@ -10,6 +10,7 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <vector>
 
 namespace softshadows
 {
@@ -321,6 +322,85 @@ SceneShadows ReadShadows(const Json& value, const std::string& path)
   return shadows;
 }
 
+// The path of the value the parser stopped at (nlohmann's parse errors say
+// where in the text, its out-of-range errors nothing), in the form the
+// field checks use: `lights[0].position[1]`.
+class FieldAtError : public nlohmann::json_sax<Json>
+{
+public:
+  std::string Path() const
+  {
+    std::string path;
+    for (const Level& level : this->Levels)
+    {
+      path = level.IsArray ? IndexPath(path, level.Index) : FieldPath(path, level.Key);
+    }
+    return path;
+  }
+
+  bool null() override { return this->Value(); }
+  bool boolean(bool) override { return this->Value(); }
+  bool number_integer(number_integer_t) override { return this->Value(); }
+  bool number_unsigned(number_unsigned_t) override { return this->Value(); }
+  bool number_float(number_float_t, const string_t&) override { return this->Value(); }
+  bool string(string_t&) override { return this->Value(); }
+  bool binary(binary_t&) override { return this->Value(); }
+  bool start_object(std::size_t) override { return this->Start(false); }
+  bool key(string_t& name) override
+  {
+    this->Levels.back().Key = name;
+    return true;
+  }
+  bool end_object() override { return this->End(); }
+  bool start_array(std::size_t) override { return this->Start(true); }
+  bool end_array() override { return this->End(); }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override
+  {
+    // An array's failing element is the one after the last value.
+    if (!this->Levels.empty() && this->Levels.back().IsArray && this->Levels.back().Started)
+    {
+      ++this->Levels.back().Index;
+    }
+    return false;
+  }
+
+private:
+  struct Level
+  {
+    bool IsArray = false;
+    bool Started = false; // an array has had an element
+    std::size_t Index = 0;
+    std::string Key;
+  };
+
+  // A value of the current array moves its index on, except the first.
+  bool Value()
+  {
+    if (!this->Levels.empty() && this->Levels.back().IsArray)
+    {
+      Level& level = this->Levels.back();
+      level.Index += level.Started ? 1 : 0;
+      level.Started = true;
+    }
+    return true;
+  }
+  bool Start(bool isArray)
+  {
+    this->Value();
+    Level level;
+    level.IsArray = isArray;
+    this->Levels.push_back(level);
+    return true;
+  }
+  bool End()
+  {
+    this->Levels.pop_back();
+    return true;
+  }
+
+  std::vector<Level> Levels;
+};
+
 Json ReadFile(const std::filesystem::path& file)
 {
   std::ifstream stream(file);
@@ -339,6 +419,14 @@ Json ReadFile(const std::filesystem::path& file)
     const std::string message = error.what();
     const auto tagEnd = message.find("] ");
     throw InputError("", tagEnd == std::string::npos ? message : message.substr(tagEnd + 2));
+  }
+  catch (const Json::out_of_range&)
+  {
+    // A number past a double's range (1e400): a mistake in one field.
+    std::ifstream again(file);
+    FieldAtError finder;
+    Json::sax_parse(again, &finder);
+    throw InputError(finder.Path(), "the number is out of the range of a double");
   }
 }
 }

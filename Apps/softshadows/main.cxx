@@ -74,6 +74,8 @@ constexpr int WarmUpFrames = 3;
 /// Technique names as file names: `contact:multipass` -> `contact_multipass`.
 std::string FileNameOf(std::string text)
 {
+  // File systems refuse names past 255 bytes; the name has more added to it.
+  text.resize(std::min<std::size_t>(text.size(), 100));
   for (char& c : text)
   {
     const bool plain =

@@ -1,0 +1,91 @@
+#include "MeshFiles.h"
+
+#include "MessageCapture.h"
+#include "PlyFiles.h"
+
+#include "vtkSoftShadowsMeshCheck.h"
+
+#include <vtkOBJReader.h>
+#include <vtkPLYReader.h>
+#include <vtkPolyData.h>
+#include <vtkSTLReader.h>
+#include <vtkXMLPolyDataReader.h>
+
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+
+namespace softshadows
+{
+namespace
+{
+template <typename Reader>
+vtkSmartPointer<Reader> MakeReader(const std::filesystem::path& file)
+{
+  auto reader = vtkSmartPointer<Reader>::New();
+  reader->SetFileName(file.string().c_str());
+  return reader;
+}
+
+// A PLY file is read once, checked, and handed to the reader from memory,
+// so that what was checked is what is read.
+vtkSmartPointer<vtkAlgorithm> MakePlyReader(const std::filesystem::path& file)
+{
+  std::ifstream in(file, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!in && !in.eof())
+  {
+    throw std::runtime_error("it cannot be opened");
+  }
+  const std::string problem = FindPlyProblem(bytes);
+  if (!problem.empty())
+  {
+    throw std::runtime_error(problem);
+  }
+  auto reader = vtkSmartPointer<vtkPLYReader>::New();
+  reader->ReadFromInputStringOn();
+  reader->SetInputString(bytes);
+  return reader;
+}
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> ReadMeshFile(const std::filesystem::path& file, MeshFormat format)
+{
+  vtkSmartPointer<vtkAlgorithm> reader;
+  switch (format)
+  {
+    case MeshFormat::VTP:
+      reader = MakeReader<vtkXMLPolyDataReader>(file);
+      break;
+    case MeshFormat::OBJ:
+      reader = MakeReader<vtkOBJReader>(file);
+      break;
+    case MeshFormat::PLY:
+      reader = MakePlyReader(file);
+      break;
+    case MeshFormat::STL:
+      reader = MakeReader<vtkSTLReader>(file);
+      break;
+  }
+
+  std::string problem;
+  {
+    MessageCapture messages;
+    reader->Update();
+    problem = messages.FirstMessage();
+  }
+  auto* mesh = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+  if (mesh && mesh->GetNumberOfPolys() + mesh->GetNumberOfStrips() > 0)
+  {
+    // Checked before anything walks its cells: the normals computed for
+    // it build cell links, which need VTK's cell sizes too.
+    problem = vtkSoftShadowsMeshCheck::FindProblem(mesh, true);
+    if (problem.empty())
+    {
+      return mesh;
+    }
+  }
+  throw std::runtime_error(problem.empty() ? "no polygons in it" : problem);
+}
+}
