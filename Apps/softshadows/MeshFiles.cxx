@@ -5,8 +5,11 @@
 
 #include "vtkSoftShadowsMeshCheck.h"
 
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
 #include <vtkOBJReader.h>
 #include <vtkPLYReader.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkSTLReader.h>
 #include <vtkXMLPolyDataReader.h>
@@ -78,6 +81,14 @@ vtkSmartPointer<vtkPolyData> ReadMeshFile(const std::filesystem::path& file, Mes
   auto* mesh = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
   if (mesh && mesh->GetNumberOfPolys() + mesh->GetNumberOfStrips() > 0)
   {
+    // Only the geometry and point normals are drawn (scenes give colours).
+    // The rest goes: VTK's OBJ reader leaves MaterialIds shorter than the
+    // cells of a file that mixes lines and faces.
+    vtkSmartPointer<vtkDataArray> normals = mesh->GetPointData()->GetNormals();
+    mesh->GetPointData()->Initialize();
+    mesh->GetCellData()->Initialize();
+    mesh->GetPointData()->SetNormals(normals);
+
     // Checked before anything walks its cells: the normals computed for
     // it build cell links, which need VTK's cell sizes too.
     problem = vtkSoftShadowsMeshCheck::FindProblem(mesh, true);

@@ -41,6 +41,7 @@ expected = {
     "property_before_element.ply": "a property before any element",
     "scalar_vertex_indices.ply": "no 'vertex_indices' list",
     "truncated_binary.ply": "the file ends inside face 1 of 2",
+    "vertex_list_without_data.ply": "vertex 0 (line 9) has too few numbers (ran out at 'vertex_indices')",
     "obj_binary_garbage.obj": "Line longer than",
     "obj_index_past_end.obj": "uses point id 3, but the mesh has 3 points",
     "obj_index_zero.obj": "uses point id -1",
