@@ -6,7 +6,8 @@
 // percentage-closer filter over Poisson taps of that radius, rotated per
 // pixel against banding, gives the visibility.
 // Uses: vtkShadowCubeLookupFS.glsl, vtkSoftShadowReceiverFS.glsl (vtkShadowCubeTexel,
-//   vtkShadowNormalBias, vtkShadowDistanceBias).
+//   vtkShadowNormalBias, vtkShadowDistanceBias, vtkShadowCube, vtkShadowCubeCenter,
+//   vtkShadowCubeRange); GL_ARB_gpu_shader5 (a sampler array indexed in a loop).
 uniform vec2 omniPoisson[32]; // a Poisson disk in the unit disc
 uniform int omniTaps;
 uniform float omniLightRadius[VTK_SHADOW_CUBES];
@@ -68,4 +69,18 @@ float vtkOmniPoissonLookup(samplerCube cube, vec3 center, vec4 positionWC, vec3 
     lit += vtkOmniTapReference(n, d, e, reference) <= vtkShadowCubeStored(cube, e, range) ? 1.0 : 0.0;
   }
   return lit / float(omniTaps);
+}
+
+// Every cube map's visibility, by vtkOmniPoissonAll(): one loop over the
+// point lights instead of one copy of the lookup for each.
+float omniVisibility[VTK_SHADOW_CUBES];
+
+float vtkOmniPoissonAll(vec4 positionWC, vec3 normalWC, int wanted)
+{
+  for (int c = 0; c < VTK_SHADOW_CUBES; ++c)
+  {
+    omniVisibility[c] = vtkOmniPoissonLookup(vtkShadowCube[c], vtkShadowCubeCenter[c], positionWC,
+      normalWC, vtkShadowCubeRange[c], omniLightRadius[c]);
+  }
+  return omniVisibility[wanted];
 }
