@@ -67,7 +67,7 @@ void vtkShadowShaderHooks::Attach(const vtkRenderState* s)
       if (!registered)
       {
         keys->Append(key, this);
-        this->Parts.emplace_back(part);
+        this->PartKeys.emplace_back(keys);
       }
     }
   }
@@ -76,18 +76,15 @@ void vtkShadowShaderHooks::Attach(const vtkRenderState* s)
 void vtkShadowShaderHooks::Detach(const vtkRenderState* s)
 {
   vtkInformationObjectBaseVectorKey* key = vtkOpenGLRenderPass::RenderPasses();
-  for (vtkProp* part : this->Parts)
+  for (vtkInformation* keys : this->PartKeys)
   {
-    if (vtkInformation* keys = part->GetPropertyKeys())
+    keys->Remove(key, this);
+    if (keys->Length(key) == 0)
     {
-      keys->Remove(key, this);
-      if (keys->Length(key) == 0)
-      {
-        keys->Remove(key);
-      }
+      keys->Remove(key);
     }
   }
-  this->Parts.clear();
+  this->PartKeys.clear();
   this->PostRender(s);
 }
 

@@ -22,6 +22,7 @@
 #include <utility> // for std::pair
 #include <vector>  // for std::vector
 
+class vtkInformation;
 class vtkShadowStage;
 
 class VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowShaderHooks : public vtkOpenGLRenderPass
@@ -44,8 +45,8 @@ public:
   /**
    * Register on (remove from) the props of `s`, and on the parts of
    * composite props that draw their parts without handing on their keys
-   * (vtkAxesActor's shafts and tips; parts of vtkAssembly share its keys
-   * already). Parts a prop does not list (vtkProp::GetActors()), such as
+   * (vtkAxesActor's shafts and tips; vtkAssembly gives its parts its own
+   * keys while it draws them). Parts a prop does not list (vtkProp::GetActors()), such as
    * vtkLightActor's, draw as plain VTK draws them.
    */
   void Attach(const vtkRenderState* s);
@@ -72,7 +73,11 @@ private:
 
   void Report(class vtkShadowShaderSources& sources);
 
-  std::vector<vtkSmartPointer<vtkProp>> Parts; ///< parts registered on by Attach()
+  // The keys Attach() registered in, kept until Detach(): a vtkAssembly
+  // replaces its parts' keys with its own while it draws them, and keys
+  // destroyed still holding this keep a reference to it (VTK's vector key
+  // registers twice and only Remove() undoes both).
+  std::vector<vtkSmartPointer<vtkInformation>> PartKeys;
   vtkShadowStage* Stage = nullptr;
   const float (*FaceFromFirst)[16] = nullptr;
   vtkTimeStamp StageTime;

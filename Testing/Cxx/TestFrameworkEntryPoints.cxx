@@ -23,6 +23,7 @@
 #include "vtkCompositePolyDataMapper2.h"
 #include "vtkCubeSource.h"
 #include "vtkDoubleArray.h"
+#include "vtkHardShadowPass.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkLightSilhouetteFilter.h"
@@ -48,6 +49,7 @@
 #include "vtkShadowGeometry.h"
 #include "vtkShadowMapManager.h"
 #include "vtkShadowScreenBuffers.h"
+#include "vtkShadowShaderHooks.h"
 #include "vtkSoftShadowPass.h"
 #include "vtkSphereSource.h"
 #include "vtkTextureObject.h"
@@ -352,6 +354,16 @@ private:
 };
 vtkStandardNewMacro(vtkFrameworkProbePass);
 
+// A technique whose shader hooks the test can see.
+class vtkHooksProbePass : public vtkHardShadowPass
+{
+public:
+  static vtkHooksProbePass* New();
+  vtkTypeMacro(vtkHooksProbePass, vtkHardShadowPass);
+  vtkShadowShaderHooks* GetHooks() { return this->Drawer->GetHooks(); }
+};
+vtkStandardNewMacro(vtkHooksProbePass);
+
 namespace
 {
 // Share of the geometry pixels (red > 0 on a black background) of each grey
@@ -393,6 +405,48 @@ std::map<int, double> Greys(vtkRenderWindow* window, const std::vector<double>& 
   }
   strays = static_cast<double>(off) / std::max(total, 1);
   return shares;
+}
+
+// References to a pass's shader hooks once a scene with an assembly has been
+// drawn with it and then destroyed: 1 (its own) unless a prop's keys kept one.
+// vtkAssembly swaps its parts' property keys for its own while drawing them,
+// so the hooks must leave the keys they joined, not the part's current ones.
+int HooksReferencesAfterScene()
+{
+  vtkNew<vtkHooksProbePass> pass;
+  {
+    vtkNew<vtkRenderer> renderer;
+    renderer->AutomaticLightCreationOff();
+    vtkNew<vtkLight> light;
+    light->SetLightTypeToSceneLight();
+    light->SetPositional(true);
+    light->SetPosition(0.0, 5.0, 1.0);
+    light->SetConeAngle(40.0);
+    renderer->AddLight(light);
+    vtkNew<vtkPlaneSource> floor;
+    floor->SetOrigin(-2, 0, -2);
+    floor->SetPoint1(2, 0, -2);
+    floor->SetPoint2(-2, 0, 2);
+    vtkNew<vtkCubeSource> box;
+    box->SetCenter(0.0, 1.0, 0.0);
+    vtkNew<vtkAssembly> assembly;
+    for (vtkAlgorithm* source : std::vector<vtkAlgorithm*>{ floor, box })
+    {
+      vtkNew<vtkPolyDataMapper> mapper;
+      mapper->SetInputConnection(source->GetOutputPort());
+      vtkNew<vtkActor> actor;
+      actor->SetMapper(mapper);
+      assembly->AddPart(actor);
+    }
+    renderer->AddViewProp(assembly);
+    renderer->SetPass(pass);
+    vtkNew<vtkRenderWindow> window;
+    window->SetSize(64, 64);
+    window->AddRenderer(renderer);
+    window->Render();
+    window->Render();
+  }
+  return pass->GetHooks()->GetReferenceCount();
 }
 
 // Warnings the framework prints, caught by message.
@@ -633,6 +687,10 @@ int TestFrameworkEntryPoints(int, char*[])
   Check(named == 1 && catcher.Messages.size() == 1,
     "an unshadowable mapper is named in one warning (" + std::to_string(catcher.Messages.size()) +
       " warnings)");
+
+  const int references = HooksReferencesAfterScene();
+  Check(references == 1,
+    "the shader hooks leave an assembly's parts (" + std::to_string(references) + " references)");
 
   return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
