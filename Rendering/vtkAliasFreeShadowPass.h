@@ -214,6 +214,8 @@ protected:
   ReceiverShading GetReceiverShading(const vtkShadowShaderSources& sources) override;
   void SetReceiverShadingUniforms(vtkShaderProgram* program, vtkProp* prop) override;
   void ReceiversDrawn() override;
+  /// Bent normals' two texture buffers, read by the receivers' vertex shaders.
+  int GetReceiverTexturesPerFrame() const override { return this->BentNormals ? 2 : 0; }
 
   int Variant = Soft;
   int NumberOfLightSamples = 256;

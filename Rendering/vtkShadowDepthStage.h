@@ -22,6 +22,10 @@ class VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowDepthStage : public vtkShadowStage
 public:
   /// Light-space draws flatten sprites' depth (see above). Default true.
   void SetLightSpace(bool lightSpace) { this->LightSpace = lightSpace; }
+  std::string GetName() const override
+  {
+    return this->LightSpace ? "a shadow map" : "the depth pre-pass";
+  }
 
   void PreReplace(vtkShadowShaderSources& sources) override;
   void PostReplace(vtkShadowShaderSources& sources) override;

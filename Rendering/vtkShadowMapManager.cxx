@@ -1,5 +1,6 @@
 #include "vtkShadowMapManager.h"
 
+#include "vtkCamera.h"
 #include "vtkInformation.h"
 #include "vtkInformationDoubleKey.h"
 #include "vtkLight.h"
@@ -77,7 +78,15 @@ double vtkShadowMapManager::Light::GetSize() const
 //------------------------------------------------------------------------------
 int vtkShadowMapManager::Update(vtkRenderer* renderer)
 {
+  return this->Update(renderer, Budget());
+}
+
+//------------------------------------------------------------------------------
+int vtkShadowMapManager::Update(vtkRenderer* renderer, const Budget& budget)
+{
   this->Renderer = renderer;
+  this->Unshadowed = 0;
+  this->SkippedPointLights = 0;
   std::vector<Light> previous;
   previous.swap(this->Lights);
 
@@ -97,6 +106,7 @@ int vtkShadowMapManager::Update(vtkRenderer* renderer)
   renderer->UpdateLightsGeometryToFollowCamera();
 
   // Mappers number the lights that are switched on, in collection order.
+  std::vector<Light> candidates;
   int sceneIndex = -1;
   int shaderIndex = -1;
   vtkLightCollection* lights = renderer->GetLights();
@@ -137,6 +147,17 @@ int vtkShadowMapManager::Update(vtkRenderer* renderer)
       continue; // no direction: position == focal point, or NaN
     }
     light.Direction = glm::normalize(axis);
+    if (light.Point && !budget.PointLights)
+    {
+      ++this->SkippedPointLights;
+      continue;
+    }
+    candidates.push_back(light);
+  }
+  this->Choose(candidates, budget);
+
+  for (Light& light : candidates)
+  {
     if (light.Point)
     {
       light.Faces = this->CubeFaces(light.Position);
@@ -145,7 +166,6 @@ int vtkShadowMapManager::Update(vtkRenderer* renderer)
     {
       light.Map = this->FitFrustum(light, light.Position, light.Direction);
     }
-
     // Keep last frame's textures for the same slot.
     const size_t slot = this->Lights.size();
     if (slot < previous.size())
@@ -162,6 +182,75 @@ int vtkShadowMapManager::Update(vtkRenderer* renderer)
     light.MapIndex = light.Point ? cubes++ : maps++;
   }
   return static_cast<int>(this->Lights.size());
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowMapManager::Choose(std::vector<Light>& candidates, const Budget& budget)
+{
+  auto units = [&](const Light& light) { return budget.Units ? budget.Units(light) : 1; };
+  int needed = 0;
+  for (const Light& light : candidates)
+  {
+    needed += units(light);
+  }
+  if (budget.TextureUnits < 0 || needed <= budget.TextureUnits)
+  {
+    return;
+  }
+
+  // Brightest first; then nearest the focal point, where the camera looks.
+  glm::dvec3 focus = this->SceneCenter();
+  if (this->Renderer->IsActiveCameraCreated())
+  {
+    const double* f = this->Renderer->GetActiveCamera()->GetFocalPoint();
+    focus = glm::dvec3(f[0], f[1], f[2]);
+  }
+  // (NaN keys would break the sort's ordering: they rank last.)
+  auto key = [](double v, double otherwise) { return std::isnan(v) ? otherwise : v; };
+  std::vector<size_t> order(candidates.size());
+  std::vector<double> intensity(candidates.size()), distance(candidates.size());
+  for (size_t i = 0; i < candidates.size(); ++i)
+  {
+    const Light& light = candidates[i];
+    order[i] = i;
+    intensity[i] = key(light.Source->GetIntensity(), -VTK_DOUBLE_MAX);
+    distance[i] =
+      light.Directional ? 0.0 : key(glm::length(light.Position - focus), VTK_DOUBLE_MAX);
+  }
+  std::sort(order.begin(), order.end(),
+    [&](size_t a, size_t b)
+    {
+      if (intensity[a] != intensity[b])
+      {
+        return intensity[a] > intensity[b];
+      }
+      if (distance[a] != distance[b])
+      {
+        return distance[a] < distance[b];
+      }
+      return a < b;
+    });
+  std::vector<bool> chosen(candidates.size(), false);
+  int left = budget.TextureUnits;
+  for (size_t i : order)
+  {
+    const int cost = units(candidates[i]);
+    if (cost <= left)
+    {
+      chosen[i] = true;
+      left -= cost;
+    }
+  }
+  std::vector<Light> shadowed;
+  for (size_t i = 0; i < candidates.size(); ++i)
+  {
+    if (chosen[i])
+    {
+      shadowed.push_back(candidates[i]);
+    }
+  }
+  this->Unshadowed = static_cast<int>(candidates.size() - shadowed.size());
+  candidates.swap(shadowed);
 }
 
 //------------------------------------------------------------------------------

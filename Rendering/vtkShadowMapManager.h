@@ -18,9 +18,10 @@
 #include <glm/mat4x4.hpp> // for glm::dmat4
 #include <glm/vec3.hpp>   // for glm::dvec3
 
-#include <array>  // for std::array
-#include <string> // for std::string
-#include <vector> // for std::vector
+#include <array>      // for std::array
+#include <functional> // for std::function
+#include <string>     // for std::string
+#include <vector>     // for std::vector
 
 class vtkInformationDoubleKey;
 class vtkLight;
@@ -90,10 +91,38 @@ public:
   ///@}
 
   /**
+   * What a technique can shadow: whether it shadows point lights, and how
+   * many texture units its receivers' shaders may give the shadows, each
+   * light taking `Units(light)` of them.
+   */
+  struct Budget
+  {
+    bool PointLights = true;
+    int TextureUnits = -1;                  ///< < 0: no limit
+    std::function<int(const Light&)> Units; ///< unset: 1 a light
+  };
+
+  /**
    * Collect the lights that cast shadows and fit their frusta to the bounds of
    * the visible props. Returns the number of shadowed lights.
+   *
+   * When the lights that could cast shadows need more texture units than
+   * `budget` has, the brightest (vtkLight::GetIntensity()) are shadowed,
+   * then, among equally bright ones, those nearest the camera's focal point
+   * (directional lights first, as they reach everywhere), then the first in
+   * the renderer's collection: the same lights every frame while those do
+   * not change. Each is taken if it still fits; the others are left
+   * unshadowed (GetNumberOfUnshadowedLights()) and light the scene as VTK
+   * lights it. The shadowed lights keep the collection's order.
    */
-  int Update(vtkRenderer* renderer);
+  int Update(vtkRenderer* renderer, const Budget& budget);
+  int Update(vtkRenderer* renderer); ///< every light, point lights too
+
+  /// Lights the last Update() left unshadowed because the budget had no room for them.
+  int GetNumberOfUnshadowedLights() const { return this->Unshadowed; }
+
+  /// Point lights the last Update() skipped because the budget shadows none.
+  int GetNumberOfSkippedPointLights() const { return this->SkippedPointLights; }
 
   std::vector<Light>& GetLights() { return this->Lights; }
   const std::vector<Light>& GetLights() const { return this->Lights; }
@@ -154,9 +183,12 @@ public:
 
 private:
   glm::dvec3 SceneCenter() const;
+  void Choose(std::vector<Light>& candidates, const Budget& budget);
 
   vtkRenderer* Renderer = nullptr; ///< of the last Update(), not owned
   std::vector<Light> Lights;
+  int Unshadowed = 0;
+  int SkippedPointLights = 0;
   double SceneBounds[6];
 };
 

@@ -2,16 +2,114 @@
 
 #include "vtkAbstractMapper.h"
 #include "vtkActor.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
 #include "vtkInformation.h"
 #include "vtkInformationObjectBaseVectorKey.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLShaderProperty.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderState.h"
+#include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
+#include "vtkShadowMapperCode.h"
 #include "vtkShadowStage.h"
 
 #include "vtkShadowCubeLayersGS.h"
+
+#include <cstdlib>
+#include <functional>
+
+namespace
+{
+// A shader cache of its own, only to learn why a program failed: VTK's
+// vtkShaderProgram::CompileShader() reports it by vtkErrorMacro (the whole
+// numbered source, then OpenGL's log), which an ErrorEvent observer on the
+// program receives instead of the output window. The window's cache creates
+// its programs inside ReadyShaderProgram(), before anyone could observe
+// them; this one observes each program it creates. Same text replacements,
+// same compile, VTK's code.
+class vtkShadowShaderLog : public vtkOpenGLShaderCache
+{
+public:
+  static vtkShadowShaderLog* New();
+  vtkTypeMacro(vtkShadowShaderLog, vtkOpenGLShaderCache);
+  std::vector<std::string> Errors;
+
+protected:
+  vtkShaderProgram* GetShaderProgram(
+    const char* vertex, const char* fragment, const char* geometry) override
+  {
+    vtkShaderProgram* program = this->Superclass::GetShaderProgram(vertex, fragment, geometry);
+    vtkNew<vtkCallbackCommand> keep;
+    keep->SetClientData(&this->Errors);
+    keep->SetCallback(
+      [](vtkObject*, unsigned long, void* errors, void* text) {
+        static_cast<std::vector<std::string>*>(errors)->emplace_back(
+          static_cast<const char*>(text));
+      });
+    program->AddObserver(vtkCommand::ErrorEvent, keep);
+    return program;
+  }
+};
+vtkStandardNewMacro(vtkShadowShaderLog);
+
+// "ERROR: In file, line N\nvtkShaderProgram (0x...): Links failed: error: ...\n\n"
+// without VTK's prefixes.
+std::string MessageBody(std::string text)
+{
+  const auto header = text.find('\n');
+  text = header == std::string::npos ? text : text.substr(header + 1);
+  const auto object = text.find("): ");
+  text = object == std::string::npos ? text : text.substr(object + 3);
+  const std::string links = "Links failed: ";
+  if (text.compare(0, links.size(), links) == 0)
+  {
+    text = text.substr(links.size());
+  }
+  while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+  {
+    text.pop_back();
+  }
+  return text;
+}
+
+bool DebugShaders()
+{
+  const char* value = std::getenv("SOFTSHADOWS_DEBUG_SHADERS");
+  return value && *value && std::string(value) != "0";
+}
+
+// Whether the sources the hooks see are those the mapper compiles: a
+// vtkOpenGLPolyDataMapper (and its subclasses, which edit before calling
+// it) compiles right after the render passes' PostReplace, unless its
+// actor's shader property has replacements of its own to make after them.
+bool FinalAfterHooks(vtkAbstractMapper* mapper, vtkProp* prop)
+{
+  if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
+  {
+    return false;
+  }
+  auto* actor = vtkActor::SafeDownCast(prop);
+  auto* property =
+    actor ? vtkOpenGLShaderProperty::SafeDownCast(actor->GetShaderProperty()) : nullptr;
+  if (property)
+  {
+    for (const auto& replacement : property->GetAllShaderReplacements())
+    {
+      if (!replacement.first.ReplaceFirst)
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+}
 
 vtkStandardNewMacro(vtkShadowShaderHooks);
 
@@ -32,6 +130,7 @@ void vtkShadowShaderHooks::SetStage(vtkShadowStage* stage, const float (*faceFro
 //------------------------------------------------------------------------------
 void vtkShadowShaderHooks::Attach(const vtkRenderState* s)
 {
+  this->Window = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
   this->PreRender(s);
   vtkNew<vtkPropCollection> parts;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
@@ -122,13 +221,87 @@ bool vtkShadowShaderHooks::PostReplaceShaderValues(std::string& vertexShader,
   std::string& geometryShader, std::string& fragmentShader, vtkAbstractMapper* mapper,
   vtkProp* prop)
 {
-  if (this->Stage)
+  if (!this->Stage)
   {
-    vtkShadowShaderSources sources(vertexShader, geometryShader, fragmentShader, mapper, prop);
-    this->Stage->PostReplace(sources);
-    this->Report(sources);
+    return true;
+  }
+  vtkShadowShaderSources sources(vertexShader, geometryShader, fragmentShader, mapper, prop);
+  const std::string vertex = vertexShader, geometry = geometryShader, fragment = fragmentShader;
+  this->Stage->PostReplace(sources);
+  this->Report(sources);
+  if (!this->Window || !FinalAfterHooks(mapper, prop))
+  {
+    return true;
+  }
+
+  const size_t hash =
+    std::hash<std::string>()(vertexShader + '\0' + geometryShader + '\0' + fragmentShader);
+  std::string log, details;
+  const bool known = this->Failed.count(hash) > 0;
+  if (!known && this->Compiles(sources, &log, &details))
+  {
+    return true;
+  }
+  if (!known)
+  {
+    this->Failed.insert(hash);
+    vtkObject* owner = this->Owner ? this->Owner : this;
+    std::string message = "The shader of " + this->Stage->GetName() + " for " +
+      (mapper ? mapper->GetClassName() : "a mapper") +
+      " does not compile or link: " + log.substr(0, log.find('\n')) +
+      "; it is drawn without shadows.";
+    if (DebugShaders())
+    {
+      message += "\n" + details;
+    }
+    else
+    {
+      message += " (SOFTSHADOWS_DEBUG_SHADERS=1 shows its source.)";
+    }
+    vtkErrorWithObjectMacro(owner, << message);
+  }
+  // As the mapper's code was before the stage's: plain VTK drawing.
+  vertexShader = vertex;
+  geometryShader = geometry;
+  fragmentShader = fragment;
+  for (std::string* source : { &vertexShader, &geometryShader, &fragmentShader })
+  {
+    vtkShaderProgram::Substitute(*source, vtkShadowMapperCode::ShadowDec, "", false);
+    vtkShaderProgram::Substitute(*source, vtkShadowMapperCode::ShadowImpl, "", false);
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowShaderHooks::Compiles(
+  const vtkShadowShaderSources& sources, std::string* log, std::string* details)
+{
+  // Through the window's own cache, where the mapper finds it compiled next,
+  // with VTK's warning display off for that one call: a failure there prints
+  // the whole numbered source.
+  const int display = vtkObject::GetGlobalWarningDisplay();
+  vtkObject::GlobalWarningDisplayOff();
+  vtkShaderProgram* program = this->Window->GetShaderCache()->ReadyShaderProgram(
+    sources.Vertex.c_str(), sources.Fragment.c_str(), sources.Geometry.c_str());
+  vtkObject::SetGlobalWarningDisplay(display);
+  if (program)
+  {
+    return true;
+  }
+  // Why: the same compile again, its errors observed (the numbered source
+  // of a shader that does not compile, then OpenGL's log; a link's log).
+  vtkNew<vtkShadowShaderLog> again;
+  again->ReadyShaderProgram(
+    sources.Vertex.c_str(), sources.Fragment.c_str(), sources.Geometry.c_str());
+  again->ReleaseGraphicsResources(this->Window);
+  this->Window->GetShaderCache()->ClearLastShaderBound(); // in case it bound one after all
+  details->clear();
+  for (const std::string& error : again->Errors)
+  {
+    *details += MessageBody(error) + "\n";
+  }
+  *log = again->Errors.empty() ? std::string("(no log)") : MessageBody(again->Errors.back());
+  return false;
 }
 
 //------------------------------------------------------------------------------

@@ -8,6 +8,16 @@
  * to the stage, adds the layered geometry shader when a draw fills all six
  * faces of a cube map, and warns once per mapper class and edit when a
  * stage's required edit found nothing to edit. Its Render() draws nothing.
+ *
+ * It also compiles each program the stage edited, as the mapper is about to
+ * ask for it, through the window's shader cache (so it still compiles once):
+ * a program that fails is reported in one error, from the owner (the
+ * technique), naming the stage, the mapper and the first line of OpenGL's
+ * log, and the mapper gets its shaders as they were before the stage's
+ * PostReplace(), the framework's tags emptied: drawn as VTK draws it, not
+ * blank. With the environment variable SOFTSHADOWS_DEBUG_SHADERS set (to
+ * anything but 0) the error also holds the numbered sources and the whole
+ * log. A program that failed once is not compiled or reported again.
  */
 
 #ifndef vtkShadowShaderHooks_h
@@ -23,6 +33,9 @@
 #include <vector>  // for std::vector
 
 class vtkInformation;
+class vtkObject;
+class vtkOpenGLRenderWindow;
+class vtkShadowShaderSources;
 class vtkShadowStage;
 
 class VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowShaderHooks : public vtkOpenGLRenderPass
@@ -40,6 +53,12 @@ public:
    */
   void SetStage(vtkShadowStage* stage, const float (*faceFromFirst)[16] = nullptr);
   vtkShadowStage* GetStage() const { return this->Stage; }
+
+  /**
+   * Who reports the shaders that fail (vtkErrorWithObjectMacro), and whose
+   * class names them: the technique. Not owned. Default: these hooks.
+   */
+  void SetOwner(vtkObject* owner) { this->Owner = owner; }
 
   ///@{
   /**
@@ -71,7 +90,8 @@ private:
   vtkShadowShaderHooks(const vtkShadowShaderHooks&) = delete;
   void operator=(const vtkShadowShaderHooks&) = delete;
 
-  void Report(class vtkShadowShaderSources& sources);
+  void Report(vtkShadowShaderSources& sources);
+  bool Compiles(const vtkShadowShaderSources& sources, std::string* log, std::string* details);
 
   // The keys Attach() registered in, kept until Detach(): a vtkAssembly
   // replaces its parts' keys with its own while it draws them, and keys
@@ -79,6 +99,9 @@ private:
   // registers twice and only Remove() undoes both).
   std::vector<vtkSmartPointer<vtkInformation>> PartKeys;
   vtkShadowStage* Stage = nullptr;
+  vtkObject* Owner = nullptr;
+  vtkOpenGLRenderWindow* Window = nullptr; ///< of the last Attach()
+  std::set<size_t> Failed;                 ///< hashes of the programs that failed
   const float (*FaceFromFirst)[16] = nullptr;
   vtkTimeStamp StageTime;
   std::set<std::pair<std::string, std::string>> Reported; ///< (mapper class, edit) warned about

@@ -3,6 +3,10 @@
 #include "vtkShaderProgram.h"
 #include "vtkShadowMapperCode.h"
 
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+
 vtkShadowStage::~vtkShadowStage() = default;
 
 //------------------------------------------------------------------------------
@@ -38,4 +42,54 @@ void vtkShadowShaderSources::AddFragmentExtension(const std::string& extension)
 bool vtkShadowShaderSources::IsLit() const
 {
   return vtkShadowMapperCode::IsLit(this->Fragment);
+}
+
+//------------------------------------------------------------------------------
+int vtkShadowShaderSources::CountTextures() const
+{
+  int count = 0;
+  for (const std::string* source : { &this->Vertex, &this->Geometry, &this->Fragment })
+  {
+    const std::string& text = *source;
+    auto skipSpace = [&](size_t i)
+    {
+      while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i])))
+      {
+        ++i;
+      }
+      return i;
+    };
+    auto word = [&](size_t& i)
+    {
+      const size_t start = i;
+      while (
+        i < text.size() && (std::isalnum(static_cast<unsigned char>(text[i])) || text[i] == '_'))
+      {
+        ++i;
+      }
+      return text.substr(start, i - start);
+    };
+    // "uniform [precision] [iu]sampler<kind> name [N];"
+    for (size_t at = text.find("uniform"); at != std::string::npos;
+         at = text.find("uniform", at + 7))
+    {
+      size_t i = skipSpace(at + 7);
+      std::string type = word(i);
+      if (type == "lowp" || type == "mediump" || type == "highp")
+      {
+        i = skipSpace(i);
+        type = word(i);
+      }
+      if (type.find("sampler") == std::string::npos)
+      {
+        continue;
+      }
+      i = skipSpace(i);
+      word(i);
+      i = skipSpace(i);
+      const bool array = i < text.size() && text[i] == '[';
+      count += array ? std::max(1, std::atoi(text.c_str() + i + 1)) : 1;
+    }
+  }
+  return count;
 }

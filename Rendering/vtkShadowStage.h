@@ -67,6 +67,10 @@ public:
   /// Whether the fragment shader has a lit view-space position (see vtkShadowMapperCode).
   bool IsLit() const;
 
+  /// Texture units the three shaders declare (sampler uniforms, arrays by
+  /// their size): before the receiver stage's code, the mapper's own.
+  int CountTextures() const;
+
   /// What the mapper's actors miss, one sentence each after the mapper's
   /// name (Require()'s misses, and any a stage adds), in order.
   const std::vector<std::string>& GetMisses() const { return this->Misses; }
@@ -91,6 +95,9 @@ public:
   virtual void PostReplace(vtkShadowShaderSources&) {}
   /// Each program, each draw: the stage's uniforms.
   virtual void SetUniforms(vtkShaderProgram*, vtkProp*) {}
+
+  /// What the stage draws, for messages ("the receivers").
+  virtual std::string GetName() const { return "a shadow map"; }
 };
 
 #endif

@@ -178,6 +178,8 @@ protected:
   std::string GetVisibilityExpression(int slot) override;
   void SetVisibilityUniforms(vtkShaderProgram* program) override;
   std::vector<ReceiverTexture> GetReceiverTextures() override;
+  /// Each light's signed distances and its lookup texture.
+  int GetReceiverTexturesPerLight(bool) const override { return 2; }
 
   int Variant = Soft;
   double ExpectedWidth = 0.0;

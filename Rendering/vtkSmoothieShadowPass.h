@@ -154,6 +154,9 @@ protected:
   std::string GetVisibilityExpression(int slot) override;
   void SetVisibilityUniforms(vtkShaderProgram* program) override;
   std::vector<ReceiverTexture> GetReceiverTextures() override;
+  /// Each light's smoothie buffer (spot and directional lights' linear
+  /// depths take the place of the framework's map).
+  int GetReceiverTexturesPerLight(bool) const override { return 1; }
 
   double Thickness = 0.0;
   double PenumbraScale = 0.7;

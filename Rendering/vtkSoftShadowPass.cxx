@@ -141,6 +141,8 @@ public:
     sources.Require(sources.Fragment, vtkShadowMapperCode::ShadowImpl, impl, "the camera pass");
   }
 
+  std::string GetName() const override { return "the camera pass"; }
+
   void SetUniforms(vtkShaderProgram* program, vtkProp*) override
   {
     if (program->IsUniformUsed("vtkShadowViewToWorld"))
@@ -190,6 +192,7 @@ public:
 
   void PostReplace(vtkShadowShaderSources& sources) override;
   void SetUniforms(vtkShaderProgram* program, vtkProp*) override;
+  std::string GetName() const override { return "the receivers"; }
 
 private:
   vtkSoftShadowPass* Pass;
@@ -202,22 +205,42 @@ void vtkSoftShadowPass::vtkReceiverStage::PostReplace(vtkShadowShaderSources& so
   std::string& fragmentShader = sources.Fragment;
   const auto& lights = pass->Maps->GetLights();
   const bool lit = sources.IsLit();
-  const bool active = lit && !lights.empty();
   if (!lights.empty() && sources.Mapper && sources.Mapper->IsA("vtkVolumeMapper"))
   {
     sources.AddMiss("volumes receive no shadows from " + std::string(pass->GetClassName()) +
       "; they are drawn as VTK draws them without it");
   }
 
+  // The shadowed lights were chosen to fit beside ReservedTextureUnits of
+  // the mappers' own textures; a shader with more of its own shadows the
+  // first lights that fit (arrays indexed by slot stay compact), and raises
+  // the reserve for the next frames.
+  const int own = lit ? sources.CountTextures() : 0;
+  pass->ReceiverOwnTextures = std::max(pass->ReceiverOwnTextures, own);
+  int room = pass->TextureUnits - own - pass->GetReceiverTexturesPerFrame();
+  size_t count = 0;
+  while (count < lights.size() && pass->ReceiverTextures(lights[count].Point) <= room)
+  {
+    room -= pass->ReceiverTextures(lights[count].Point);
+    ++count;
+  }
+  if (lit && count < lights.size())
+  {
+    sources.AddMiss("its own " + std::to_string(own) + " textures leave room for the shadows of " +
+      std::to_string(count) + " of the " + std::to_string(lights.size()) +
+      " shadowed lights; the others light it unshadowed");
+  }
+  const bool active = lit && count > 0;
+
   std::string onlyVisibility = "1.0";
   std::string unscaled; // lights whose lighting lines were not found
   std::ostringstream dec, impl;
   if (active)
   {
-    const auto cubes = std::count_if(
-      lights.begin(), lights.end(), [](const vtkShadowMapManager::Light& l) { return l.Point; });
-    dec << "#define VTK_SHADOW_LIGHTS " << lights.size() << "\n"
-        << "#define VTK_SHADOW_MAPS " << lights.size() - cubes << "\n"
+    const auto cubes = std::count_if(lights.begin(), lights.begin() + count,
+      [](const vtkShadowMapManager::Light& l) { return l.Point; });
+    dec << "#define VTK_SHADOW_LIGHTS " << count << "\n"
+        << "#define VTK_SHADOW_MAPS " << count - cubes << "\n"
         << "#define VTK_SHADOW_CUBES " << cubes << "\n";
     if (pass->UsesScreenSpace())
     {
@@ -252,7 +275,7 @@ void vtkSoftShadowPass::vtkReceiverStage::PostReplace(vtkShadowShaderSources& so
     {
       impl << "  vtkShadowScreenSetup(vtkShadowPositionWC);\n";
     }
-    for (size_t slot = 0; slot < lights.size(); ++slot)
+    for (size_t slot = 0; slot < count; ++slot)
     {
       const int n = lights[slot].ShaderIndex;
       const int i = static_cast<int>(slot);
@@ -378,6 +401,7 @@ vtkSoftShadowPass::vtkSoftShadowPass()
   this->DefaultSteps->SetTranslucentPass(this->OrderIndependent);
   this->SetDelegatePass(this->DefaultSteps);
   this->PrePassStage->SetLightSpace(false);
+  this->Drawer->GetHooks()->SetOwner(this); // names the technique in its errors
 }
 
 //------------------------------------------------------------------------------
@@ -426,6 +450,32 @@ int vtkSoftShadowPass::GetNumberOfShadowedLights() const
 }
 
 //------------------------------------------------------------------------------
+int vtkSoftShadowPass::GetNumberOfUnshadowedLights() const
+{
+  return this->Maps->GetNumberOfUnshadowedLights();
+}
+
+//------------------------------------------------------------------------------
+int vtkSoftShadowPass::GetMaximumNumberOfShadowedLights(bool pointLights) const
+{
+  return std::max(this->ShadowTextureUnits(), 0) / this->ReceiverTextures(pointLights);
+}
+
+//------------------------------------------------------------------------------
+int vtkSoftShadowPass::ShadowTextureUnits() const
+{
+  return this->TextureUnits - std::max(this->ReservedTextureUnits, this->ReceiverOwnTextures) -
+    this->GetReceiverTexturesPerFrame();
+}
+
+//------------------------------------------------------------------------------
+int vtkSoftShadowPass::ReceiverTextures(bool pointLight) const
+{
+  // The light's map (or cube map), its screen-space texture, the technique's.
+  return 1 + (this->UsesScreenSpace() ? 1 : 0) + this->GetReceiverTexturesPerLight(pointLight);
+}
+
+//------------------------------------------------------------------------------
 void vtkSoftShadowPass::Render(const vtkRenderState* s)
 {
   vtkOpenGLClearErrorMacro();
@@ -446,23 +496,41 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   }
 
   // 1. Decide: which lights cast shadows, and their frusta; what casts.
-  this->Maps->Update(renderer);
+  // As many lights as the receivers' texture units have room for.
+  GLint fragmentUnits = 0, combinedUnits = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &fragmentUnits);
+  glGetIntegerv(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, &combinedUnits);
+  this->TextureUnits = std::min(fragmentUnits, combinedUnits);
+  vtkShadowMapManager::Budget budget;
+  budget.PointLights = this->SupportsPointLights();
+  budget.TextureUnits = std::max(this->ShadowTextureUnits(), 0);
+  budget.Units = [this](const vtkShadowMapManager::Light& light)
+  { return this->ReceiverTextures(light.Point); };
+  this->Maps->Update(renderer, budget);
   this->Casters->Update(renderer);
   auto& shadowed = this->Maps->GetLights();
-  if (!this->SupportsPointLights())
+  const int points = this->Maps->GetNumberOfSkippedPointLights();
+  if (points > 0 && !this->PointLightReported)
   {
-    const auto points = std::count_if(shadowed.begin(), shadowed.end(),
-      [](const vtkShadowMapManager::Light& l) { return l.Point; });
-    if (points > 0 && !this->PointLightReported)
+    vtkErrorMacro(<< points
+                  << " point light(s) (positional, cone angle >= 90): " << this->GetClassName()
+                  << " does not shadow point lights yet; they are drawn without shadows.");
+    this->PointLightReported = true;
+  }
+  const int unshadowed = this->Maps->GetNumberOfUnshadowedLights();
+  if (unshadowed != this->ReportedUnshadowed)
+  {
+    if (unshadowed > 0)
     {
-      vtkErrorMacro(<< points
-                    << " point light(s) (positional, cone angle >= 90): " << this->GetClassName()
-                    << " does not shadow point lights yet; they are drawn without shadows.");
-      this->PointLightReported = true;
+      vtkWarningMacro(<< unshadowed << " of " << shadowed.size() + unshadowed
+                      << " lights are drawn without shadows: " << this->GetClassName()
+                      << "'s receivers have " << budget.TextureUnits
+                      << " texture units for shadows here and a light takes "
+                      << this->ReceiverTextures(false) << " (a point light "
+                      << this->ReceiverTextures(true)
+                      << "); the brightest, then those nearest the focal point, are shadowed.");
     }
-    shadowed.erase(std::remove_if(shadowed.begin(), shadowed.end(),
-                     [](const vtkShadowMapManager::Light& l) { return l.Point; }),
-      shadowed.end());
+    this->ReportedUnshadowed = unshadowed;
   }
 
   // 2-3. Draw the technique's maps and screen-space passes.
@@ -780,6 +848,7 @@ void vtkSoftShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PackedCubeMaps: " << this->PackedCubeMaps << "\n";
   os << indent << "DepthPrePass: " << this->DepthPrePass << "\n";
   os << indent << "ShadowOnlyLight: " << this->ShadowOnlyLight << "\n";
+  os << indent << "ReservedTextureUnits: " << this->ReservedTextureUnits << "\n";
   os << indent << "DelegatePass: ";
   if (this->DelegatePass)
   {

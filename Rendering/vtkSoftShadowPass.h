@@ -34,6 +34,17 @@
  * lights, angular radius in degrees for directional lights. 0 is a point
  * light. vtkLight::GetShadowAttenuation() is honoured as in vtkShadowMapPass.
  *
+ * A receiver's shader has a limited number of texture units
+ * (GL_MAX_TEXTURE_IMAGE_UNITS, and GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS over
+ * all its stages), and every shadowed light takes some: its map, its
+ * screen-space texture for screen-space techniques, and the technique's own
+ * (GetReceiverTexturesPerLight()). When the lights would need more than the
+ * context has, less ReservedTextureUnits for VTK's own textures, the
+ * brightest lights, then those nearest the camera's focal point, are
+ * shadowed (vtkShadowMapManager::Update()), the others light the scene
+ * unshadowed, and one warning says how many, again only when that number
+ * changes.
+ *
  * ShadowOnlyLight >= 0 replaces each fragment's colour with the raw visibility
  * of that light (index in the renderer's light collection): 1 lit, 0 umbra.
  * It is what quality is measured on.
@@ -190,10 +201,36 @@ public:
   vtkGetObjectMacro(DelegatePass, vtkRenderPass);
   ///@}
 
+  ///@{
+  /**
+   * Texture units of a receiver's shader left to VTK's own textures (an
+   * actor's texture, scalar colours, PBR's material and environment maps,
+   * depth peeling's buffers) when deciding how many lights can be shadowed;
+   * a receiver whose shader declares more textures of its own raises it for
+   * the frames after. Default 4.
+   */
+  vtkSetClampMacro(ReservedTextureUnits, int, 0, 64);
+  vtkGetMacro(ReservedTextureUnits, int);
+  ///@}
+
   /**
    * Number of lights that cast a shadow in the last frame.
    */
   int GetNumberOfShadowedLights() const;
+
+  /**
+   * Number of lights drawn without shadows in the last frame because the
+   * receivers' texture units had no room for them.
+   */
+  int GetNumberOfUnshadowedLights() const;
+
+  /**
+   * How many lights of one kind (point lights, or spot and directional
+   * lights) the technique could shadow at once in the last frame's context:
+   * the texture units for shadows over those one light takes. 0 before the
+   * first frame.
+   */
+  int GetMaximumNumberOfShadowedLights(bool pointLights) const;
 
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
@@ -304,6 +341,18 @@ protected:
    */
   virtual bool SupportsPointLights() const { return false; }
 
+  ///@{
+  /**
+   * Texture units the technique's receivers read for one shadowed light (a
+   * point light when `pointLight`) besides the framework's own (the light's
+   * map, and with UsesScreenSpace() its screen-space texture), and per frame
+   * besides those of any light: what limits how many lights can be shadowed.
+   * Default 0.
+   */
+  virtual int GetReceiverTexturesPerLight(bool vtkNotUsed(pointLight)) const { return 0; }
+  virtual int GetReceiverTexturesPerFrame() const { return 0; }
+  ///@}
+
   /**
    * GLSL declarations the technique adds to receivers' fragment shaders,
    * after the framework's own (vtkSoftShadowReceiverFS.glsl). Default: none.
@@ -395,6 +444,7 @@ protected:
   bool PackedCubeMaps = false;
   bool DepthPrePass = false;
   int ShadowOnlyLight = -1;
+  int ReservedTextureUnits = 4;
   vtkRenderPass* DelegatePass = nullptr;
 
   // The framework: what a frame casts, its lights and maps, its screen
@@ -421,6 +471,13 @@ private:
   bool LinearMaps = false;
   bool PointLightReported = false;
   bool ComputeReported = false;
+  int ReportedUnshadowed = 0;  ///< the count the last warning gave
+  int TextureUnits = 0;        ///< a receiver's units, in the last frame's context
+  int ReceiverOwnTextures = 0; ///< most textures a receiver's shader declared of its own
+  /// TextureUnits less the reserve and GetReceiverTexturesPerFrame().
+  int ShadowTextureUnits() const;
+  /// Units one shadowed light (a point light when `pointLight`) takes.
+  int ReceiverTextures(bool pointLight) const;
   void RenderDepthPrePass(const vtkRenderState* s);
   void ChooseTranslucency(vtkRenderer* renderer);
   vtkSmartPointer<vtkRenderStepsPass> DefaultSteps;

@@ -1,6 +1,7 @@
 """The `softshadows` program: listing, rendering, sizes, and one clear
 message naming the field for every malformed scene."""
 import json
+import math
 import os
 import tempfile
 
@@ -59,6 +60,19 @@ with tempfile.TemporaryDirectory() as folder:
     # Shadow-only: grey + alpha, background transparent.
     visibility, geometry = st.shadow_only(good)
     st.check(geometry.any() and not geometry.all(), "shadow-only alpha separates geometry from background")
+
+    # More lights than the receivers have texture units for: rendered, one
+    # warning, no shader source, exit code 0.
+    many = dict(good, size=[64, 48], lights=[
+        {"type": "spot" if i % 2 else "point", "position": [math.cos(i), 4.0, math.sin(i)],
+         "intensity": 0.05} for i in range(40)])
+    many_file = os.path.join(folder, "many.json")
+    with open(many_file, "w") as f:
+        json.dump(many, f)
+    result = st.run(["render", many_file, "--output", os.path.join(folder, "many.png")])
+    st.check(result.stderr.count("lights are drawn without shadows") == 1 and
+             len(result.stderr.strip().splitlines()) == 1,
+             "40 lights: one warning line and nothing else: %r" % result.stderr[-300:])
 
     # VTK's own pass renders too (the benchmark's baseline).
     st.run(["render", scene_file, "--technique", "vtk", "--output", os.path.join(folder, "vtk.png")])
