@@ -4,6 +4,7 @@
 #include <vtkOutputWindow.h>
 
 #include <cctype>
+#include <iostream>
 
 namespace softshadows
 {
@@ -25,12 +26,21 @@ public:
       // The first message says what went wrong: a reader's warning that it
       // cannot open the file comes before its executive's error that it failed.
       this->First += this->First.empty() ? Clean(text) : std::string();
+      this->FirstError += error && this->FirstError.empty() ? Clean(text) : std::string();
       this->HasError = this->HasError || error;
+    }
+    // Watching: VTK's logger has printed it already, unless VTK was built
+    // without one, when its own window would print it.
+    if (text && this->Print && !vtkLogger::IsEnabled())
+    {
+      std::cerr << text;
     }
   }
 
   std::string First;
+  std::string FirstError;
   bool HasError = false;
+  bool Print = false;
 
 private:
   // "ERROR: In file.cxx, line 12\nvtkPLYReader (0x...): What went wrong\n..."
@@ -53,13 +63,18 @@ vtkStandardNewMacro(CapturingWindow);
 }
 
 //------------------------------------------------------------------------------
-MessageCapture::MessageCapture()
+MessageCapture::MessageCapture(Mode mode)
   : Previous(vtkOutputWindow::GetInstance())
   , Capture(vtkSmartPointer<CapturingWindow>::New())
   , PreviousVerbosity(vtkLogger::GetCurrentVerbosityCutoff())
+  , Kind(mode)
 {
   // VTK's macros post both to the logger and to the output window.
-  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  if (mode == Mode::Keep)
+  {
+    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  }
+  static_cast<CapturingWindow*>(this->Capture.Get())->Print = mode == Mode::Watch;
   vtkOutputWindow::SetInstance(this->Capture);
 }
 
@@ -67,13 +82,22 @@ MessageCapture::MessageCapture()
 MessageCapture::~MessageCapture()
 {
   vtkOutputWindow::SetInstance(this->Previous);
-  vtkLogger::SetStderrVerbosity(this->PreviousVerbosity);
+  if (this->Kind == Mode::Keep)
+  {
+    vtkLogger::SetStderrVerbosity(this->PreviousVerbosity);
+  }
 }
 
 //------------------------------------------------------------------------------
 bool MessageCapture::HasError() const
 {
   return static_cast<CapturingWindow*>(this->Capture.Get())->HasError;
+}
+
+//------------------------------------------------------------------------------
+std::string MessageCapture::FirstError() const
+{
+  return static_cast<CapturingWindow*>(this->Capture.Get())->FirstError;
 }
 
 //------------------------------------------------------------------------------

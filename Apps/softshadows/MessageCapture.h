@@ -5,6 +5,10 @@
  * the reader, its parser and its executive). While a MessageCapture lives,
  * they are kept here, so the program can report the failure in one line that
  * names the scene field, quoting the first thing VTK said.
+ *
+ * Watching instead (Mode::Watch), VTK still prints every message as it
+ * would (through its logger), and the capture only notes them: a render that
+ * logged an error can then fail the command.
  */
 
 #ifndef softshadows_MessageCapture_h
@@ -22,11 +26,20 @@ namespace softshadows
 class MessageCapture
 {
 public:
-  MessageCapture();
+  enum class Mode
+  {
+    Keep, ///< messages are kept here, not printed
+    Watch ///< printed as VTK prints them, and noted
+  };
+
+  explicit MessageCapture(Mode mode = Mode::Keep);
   ~MessageCapture();
 
   /// Whether VTK posted an error.
   bool HasError() const;
+
+  /// The first line of the first error, as FirstMessage() gives it.
+  std::string FirstError() const;
 
   /// The first line of the first error or warning, without VTK's
   /// "In file, line" and "Class (0x...):" prefixes; empty when none came.
@@ -39,6 +52,7 @@ private:
   vtkSmartPointer<vtkOutputWindow> Previous;
   vtkSmartPointer<vtkOutputWindow> Capture;
   vtkLogger::Verbosity PreviousVerbosity;
+  Mode Kind;
 };
 }
 

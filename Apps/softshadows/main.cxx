@@ -4,6 +4,7 @@
 #include "Benchmark.h"
 #include "CommandLine.h"
 #include "Images.h"
+#include "MessageCapture.h"
 #include "Quality.h"
 #include "SceneBuilder.h"
 #include "SceneFile.h"
@@ -159,6 +160,17 @@ public:
   vtkSmartPointer<vtkRenderWindow> Window;
 };
 
+/// Fails the command when VTK logged an error while `watch` lived (a shader
+/// that did not compile, a texture unit short...): the frame may be drawn,
+/// but not as asked. VTK has printed the error already.
+void FailOnError(const MessageCapture& watch)
+{
+  if (watch.HasError())
+  {
+    throw std::runtime_error("VTK reported an error while rendering: " + watch.FirstError());
+  }
+}
+
 std::vector<TechniqueSpec> WithHard(std::vector<TechniqueSpec> specs)
 {
   for (const TechniqueSpec& spec : specs)
@@ -249,10 +261,12 @@ int Render(const std::vector<std::string>& arguments)
     : std::filesystem::path(FileNameOf(scene.Name) + "-" + FileNameOf(technique.Spec) + ".png");
 
   vtkRenderWindow* window = session.OpenWindow(size, shadowOnly);
+  MessageCapture watch(MessageCapture::Mode::Watch);
   session.Render(technique);
   vtkSmartPointer<vtkImageData> image = CaptureWindow(window, shadowOnly);
   WritePNG(shadowOnly ? GreyAndAlpha(image) : image, output);
   std::cout << "wrote " << output.string() << "\n";
+  FailOnError(watch);
   return 0;
 }
 
@@ -266,6 +280,7 @@ int Bench(const std::vector<std::string>& arguments)
 
   Session session(line, specs);
   vtkRenderWindow* window = session.OpenWindow(size, false);
+  MessageCapture watch(MessageCapture::Mode::Watch);
   const std::vector<Timing> timings = RunBenchmark(window, session.Renderer, session.Techniques,
     frames, WarmUpFrames, session.Description.Shadows.MapSize);
   if (line.Has("--json"))
@@ -276,6 +291,7 @@ int Bench(const std::vector<std::string>& arguments)
   {
     PrintTimingTable(std::cout, timings);
   }
+  FailOnError(watch);
   return 0;
 }
 
@@ -298,6 +314,7 @@ int Gallery(const std::vector<std::string>& arguments)
   }
 
   vtkRenderWindow* window = session.OpenWindow(size, false);
+  MessageCapture watch(MessageCapture::Mode::Watch);
   std::vector<vtkSmartPointer<vtkImageData>> tiles;
   for (const TechniqueInstance& technique : session.Techniques)
   {
@@ -323,6 +340,7 @@ int Gallery(const std::vector<std::string>& arguments)
   const std::vector<Timing> timings = RunBenchmark(window, session.Renderer, session.Techniques,
     frames, WarmUpFrames, session.Description.Shadows.MapSize);
   PrintTimingTable(std::cout, timings);
+  FailOnError(watch);
   return 0;
 }
 
@@ -386,6 +404,7 @@ int Quality(const std::vector<std::string>& arguments)
   session.Renderer->SetBackground(0.0, 0.0, 0.0);
   session.Renderer->SetBackgroundAlpha(0.0);
   vtkRenderWindow* window = session.OpenWindow(pixels, true);
+  MessageCapture watch(MessageCapture::Mode::Watch);
   const bool json = line.Has("--json");
   if (!json)
   {
@@ -412,6 +431,7 @@ int Quality(const std::vector<std::string>& arguments)
         100.0 * figures.Mismatch, figures.Pixels, figures.Umbra, figures.PenumbraRatio);
     }
   }
+  FailOnError(watch);
   return 0;
 }
 
