@@ -10,6 +10,7 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <sstream>
 #include <vector>
 
 namespace softshadows
@@ -401,16 +402,23 @@ private:
   std::vector<Level> Levels;
 };
 
-Json ReadFile(const std::filesystem::path& file)
+std::string ReadFile(const std::filesystem::path& file)
 {
-  std::ifstream stream(file);
+  std::ifstream stream(file, std::ios::binary);
   if (!stream)
   {
     throw InputError("", std::string("cannot read the file: ") + std::strerror(errno));
   }
+  std::ostringstream text;
+  text << stream.rdbuf();
+  return text.str();
+}
+
+Json ParseJson(const std::string& text)
+{
   try
   {
-    return Json::parse(stream);
+    return Json::parse(text);
   }
   catch (const Json::parse_error& error)
   {
@@ -423,9 +431,8 @@ Json ReadFile(const std::filesystem::path& file)
   catch (const Json::out_of_range&)
   {
     // A number past a double's range (1e400): a mistake in one field.
-    std::ifstream again(file);
     FieldAtError finder;
-    Json::sax_parse(again, &finder);
+    Json::sax_parse(text, &finder);
     throw InputError(finder.Path(), "the number is out of the range of a double");
   }
 }
@@ -441,7 +448,13 @@ Json SceneShadows::ParametersOf(const std::string& name) const
 //------------------------------------------------------------------------------
 Scene LoadScene(const std::filesystem::path& file)
 {
-  const Json root = ReadFile(file);
+  return ParseScene(ReadFile(file), file);
+}
+
+//------------------------------------------------------------------------------
+Scene ParseScene(const std::string& text, const std::filesystem::path& file)
+{
+  const Json root = ParseJson(text);
   if (!root.is_object())
   {
     throw InputError("", "expected a JSON object at the top level");

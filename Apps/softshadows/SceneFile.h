@@ -100,6 +100,13 @@ struct Scene
  */
 Scene LoadScene(const std::filesystem::path& file);
 
+/**
+ * Checks `text` as LoadScene() checks the contents of `file`, whose name
+ * gives the default scene name and whose folder mesh paths are relative to.
+ * The fuzz target's entry point: it reads nothing but mesh files' existence.
+ */
+Scene ParseScene(const std::string& text, const std::filesystem::path& file);
+
 /// Largest width or height accepted for a window.
 constexpr int MaximumWindowSize = 16384;
 }
