@@ -47,13 +47,28 @@ softshadows_install_packages() {
   "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y "${missing[@]}"
 }
 
-# Configures build/ (Release) unless it is configured already, then builds it.
+# Configures FOLDER (default build/; Release and the cmake options given after
+# it) unless it is configured already, then builds it, e.g.
+#   softshadows_build build-sanitize -DSOFTSHADOWS_SANITIZE=ON
 softshadows_build() {
   local root build
   root=$(softshadows_root)
-  build="$root/build"
+  build="$root/${1:-build}"
+  shift || true
   if [ ! -f "$build/CMakeCache.txt" ]; then
-    cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release
+    cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release "$@"
   fi
   cmake --build "$build" -j2
+}
+
+# Runs ctest in FOLDER (default build/) under a virtual X server, with any
+# further ctest arguments.
+softshadows_ctest() {
+  local build
+  build="$(softshadows_root)/${1:-build}"
+  shift || true
+  # -noreset: Xvfb would otherwise reset whenever its last client leaves and
+  # refuse the next test's connection for a moment.
+  xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" \
+    ctest --test-dir "$build" --output-on-failure -j2 "$@"
 }

@@ -10,8 +10,4 @@ cd "$(softshadows_root)"
 # numpy only for the tests' numeric checks.
 softshadows_install_packages "${SOFTSHADOWS_PACKAGES[@]}" python3-numpy
 softshadows_build
-
-# -noreset: Xvfb would otherwise reset whenever its last client leaves and
-# refuse the next test's connection for a moment.
-xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" \
-  ctest --test-dir build --output-on-failure -j2 "$@"
+softshadows_ctest build "$@"

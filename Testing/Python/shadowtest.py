@@ -16,6 +16,12 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOImage import vtkPNGReader
 
 SOFTSHADOWS = os.environ.get("SOFTSHADOWS_EXE", "softshadows")
+# Sanitizer builds check this interpreter for memory errors but not leaks
+# (CPython leaves objects behind at exit by design); the program it runs is
+# checked for leaks too.
+PROGRAM_ENV = None
+if "SOFTSHADOWS_PROGRAM_ASAN_OPTIONS" in os.environ:
+    PROGRAM_ENV = dict(os.environ, ASAN_OPTIONS=os.environ["SOFTSHADOWS_PROGRAM_ASAN_OPTIONS"])
 
 # The ball scene: ground 6 x 6 on y = 0, a ball of radius 0.5 at (0, h, 0),
 # a spot light above at LIGHT, camera looking down at 45 degrees.
@@ -51,7 +57,8 @@ def ball_scene(height=1.0, light_radius=0.0, technique="hard", params=None,
 
 def run(args, check=True):
     """Runs softshadows; returns the CompletedProcess."""
-    result = subprocess.run([SOFTSHADOWS] + list(args), capture_output=True, text=True)
+    result = subprocess.run([SOFTSHADOWS] + list(args), capture_output=True, text=True,
+                            env=PROGRAM_ENV)
     if check and result.returncode != 0:
         raise AssertionError("softshadows %s failed (%d):\n%s%s" % (
             " ".join(args), result.returncode, result.stdout, result.stderr))
