@@ -14,9 +14,14 @@ get_filename_component(SOFTSHADOWS_SANITIZE_SUPPRESSIONS
   "${CMAKE_CURRENT_LIST_DIR}/../Testing/Sanitize" ABSOLUTE)
 
 if (SOFTSHADOWS_SANITIZE)
+  if (SOFTSHADOWS_FUZZ)
+    message(FATAL_ERROR
+      "SOFTSHADOWS_SANITIZE and SOFTSHADOWS_FUZZ are separate builds (fuzz builds already "
+      "use AddressSanitizer and UndefinedBehaviorSanitizer): turn one off.")
+  endif ()
   if (NOT CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
     message(FATAL_ERROR "SOFTSHADOWS_SANITIZE is set up for GCC, not ${CMAKE_CXX_COMPILER_ID}: "
-      "configure with CXX=g++.")
+      "configure with CXX=g++ (clang builds are for SOFTSHADOWS_FUZZ).")
   endif ()
   # No recovery: a UBSan report fails its test instead of scrolling past.
   set(SOFTSHADOWS_SANITIZE_FLAGS
