@@ -13,7 +13,9 @@
 #include <vtkPolyData.h>
 #include <vtkSTLReader.h>
 #include <vtkXMLPolyDataReader.h>
+#include <vtksys/SystemTools.hxx>
 
+#include <cstdint>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
@@ -50,6 +52,34 @@ vtkSmartPointer<vtkAlgorithm> MakePlyReader(const std::filesystem::path& file)
   reader->SetInputString(bytes);
   return reader;
 }
+
+// VTK 9.1's vtkSTLReader reads a file it does not take for text as binary
+// STL and allocates for the triangle count of its header when that exceeds
+// what the file holds (as an int; counts below are "bogus" and ignored):
+// a truncated file or stray bytes would have it allocate gigabytes.
+vtkSmartPointer<vtkAlgorithm> MakeStlReader(const std::filesystem::path& file)
+{
+  if (vtksys::SystemTools::DetectFileType(file.string().c_str()) !=
+    vtksys::SystemTools::FileTypeText)
+  {
+    std::ifstream in(file, std::ios::binary);
+    unsigned char count[4] = {};
+    in.seekg(80);
+    if (in.read(reinterpret_cast<char*>(count), 4))
+    {
+      const auto claimed = static_cast<int32_t>(static_cast<uint32_t>(count[0]) |
+        static_cast<uint32_t>(count[1]) << 8 | static_cast<uint32_t>(count[2]) << 16 |
+        static_cast<uint32_t>(count[3]) << 24);
+      const auto held = static_cast<int64_t>((std::filesystem::file_size(file) - 84) / 50);
+      if (claimed > held)
+      {
+        throw std::runtime_error("its binary STL header gives " + std::to_string(claimed) +
+          " triangles, but the file holds " + std::to_string(held));
+      }
+    }
+  }
+  return MakeReader<vtkSTLReader>(file);
+}
 }
 
 //------------------------------------------------------------------------------
@@ -68,7 +98,7 @@ vtkSmartPointer<vtkPolyData> ReadMeshFile(const std::filesystem::path& file, Mes
       reader = MakePlyReader(file);
       break;
     case MeshFormat::STL:
-      reader = MakeReader<vtkSTLReader>(file);
+      reader = MakeStlReader(file);
       break;
   }
 

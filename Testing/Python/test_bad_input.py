@@ -46,6 +46,7 @@ expected = {
     "obj_index_past_end.obj": "uses point id 3, but the mesh has 3 points",
     "obj_index_zero.obj": "uses point id -1",
     "obj_negative_index.obj": "uses point id -2",
+    "stl_huge_count.stl": "header gives 100000000 triangles, but the file holds 1",
 }
 st.check(sorted(expected) == sorted(os.listdir(os.path.join(meshes, "bad"))),
          "every bad mesh file has its expectation")
