@@ -1,6 +1,7 @@
 #include "MeshFiles.h"
 
 #include "MessageCapture.h"
+#include "ObjFiles.h"
 #include "PlyFiles.h"
 
 #include "vtkSoftShadowsMeshCheck.h"
@@ -32,16 +33,22 @@ vtkSmartPointer<Reader> MakeReader(const std::filesystem::path& file)
   return reader;
 }
 
-// A PLY file is read once, checked, and handed to the reader from memory,
-// so that what was checked is what is read.
-vtkSmartPointer<vtkAlgorithm> MakePlyReader(const std::filesystem::path& file)
+std::string ReadBytes(const std::filesystem::path& file)
 {
   std::ifstream in(file, std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (!in && !in.eof())
   {
     throw std::runtime_error("it cannot be opened");
   }
+  return bytes;
+}
+
+// A PLY file is read once, checked, and handed to the reader from memory,
+// so that what was checked is what is read.
+vtkSmartPointer<vtkAlgorithm> MakePlyReader(const std::filesystem::path& file)
+{
+  const std::string bytes = ReadBytes(file);
   const std::string problem = FindPlyProblem(bytes);
   if (!problem.empty())
   {
@@ -51,6 +58,18 @@ vtkSmartPointer<vtkAlgorithm> MakePlyReader(const std::filesystem::path& file)
   reader->ReadFromInputStringOn();
   reader->SetInputString(bytes);
   return reader;
+}
+
+// VTK 9.1's OBJ reader reads only from a file: the file checked is read
+// again by it.
+vtkSmartPointer<vtkAlgorithm> MakeObjReader(const std::filesystem::path& file)
+{
+  const std::string problem = FindObjProblem(ReadBytes(file));
+  if (!problem.empty())
+  {
+    throw std::runtime_error(problem);
+  }
+  return MakeReader<vtkOBJReader>(file);
 }
 
 // VTK 9.1's vtkSTLReader reads a file it does not take for text as binary
@@ -92,7 +111,7 @@ vtkSmartPointer<vtkPolyData> ReadMeshFile(const std::filesystem::path& file, Mes
       reader = MakeReader<vtkXMLPolyDataReader>(file);
       break;
     case MeshFormat::OBJ:
-      reader = MakeReader<vtkOBJReader>(file);
+      reader = MakeObjReader(file);
       break;
     case MeshFormat::PLY:
       reader = MakePlyReader(file);
