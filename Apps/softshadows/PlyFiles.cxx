@@ -409,6 +409,15 @@ std::string CheckPly(const std::string& bytes)
   {
     Fail("the header has no format line");
   }
+  // The reader leaves an element's property list unset until its first
+  // property, and frees it when it closes the file.
+  for (const Element& element : elements)
+  {
+    if (element.Properties.empty())
+    {
+      Fail("the element '" + element.Name + "' has no properties");
+    }
+  }
 
   // The reader walks the elements in order and reads only "vertex" and
   // "face", without skipping others: nothing may come before them.

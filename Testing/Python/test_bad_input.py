@@ -38,6 +38,7 @@ expected = {
     "face_before_vertex.ply": "first element must be 'vertex'",
     "no_z.ply": "no 'z' property",
     "not_ply.ply": "does not start with the line 'ply'",
+    "element_without_properties.ply": "the element 'e' has no properties",
     "property_before_element.ply": "a property before any element",
     "scalar_vertex_indices.ply": "no 'vertex_indices' list",
     "truncated_binary.ply": "the file ends inside face 1 of 2",
