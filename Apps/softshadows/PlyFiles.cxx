@@ -470,6 +470,31 @@ std::string CheckPly(const std::string& bytes)
     }
   }
 
+  // vtkPLY's ASCII element reader looks up the size of every list's item
+  // type, including the lists nobody asked for, whose type it never set: in
+  // ASCII files only the lists the reader reads may appear (the faces'
+  // vertex_indices, and texcoord unless the vertices have their own).
+  if (format == Format::Ascii)
+  {
+    const bool vertexTexture = (vertex.Find("u") && vertex.Find("v")) ||
+      (vertex.Find("texture_u") && vertex.Find("texture_v"));
+    for (const Element* element : { &vertex, face })
+    {
+      for (std::size_t p = 0; element && p < element->Properties.size(); ++p)
+      {
+        const Property& property = element->Properties[p];
+        // (Of two properties of one name, the reader reads the first.)
+        const bool read = element == face && element->Find(property.Name) == &property &&
+          (property.Name == "vertex_indices" || (property.Name == "texcoord" && !vertexTexture));
+        if (property.IsList() && !read)
+        {
+          Fail("the " + element->Name + " property '" + property.Name +
+            "' is a list VTK's reader does not read, which in an ASCII file it cannot skip");
+        }
+      }
+    }
+  }
+
   Body body(bytes, position, lineNumber, format);
   for (long long i = 0; i < vertex.Count; ++i)
   {
