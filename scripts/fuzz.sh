@@ -68,7 +68,8 @@ for manifest in "${manifests[@]}"; do
   fi
   echo "== $name: ${seconds} s (log: $run/fuzz.log)"
   status=0
-  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+  LSAN_OPTIONS=suppressions="$root/Testing/Sanitize/lsan.supp":print_suppressions=0 \
+    UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     "${target[binary]}" "${options[@]}" "$run/corpus" >"$run/fuzz.log" 2>&1 || status=$?
   grep -E '^(stat::number_of_executed_units|stat::average_exec_per_sec|stat::peak_rss_mb|Done )' \
     "$run/fuzz.log" || true
