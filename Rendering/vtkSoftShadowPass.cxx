@@ -178,6 +178,14 @@ public:
       // textureGather (vtkShadowScreenVisibility) in the mappers' GLSL 1.50.
       sources.AddFragmentExtension("GL_ARB_texture_gather");
     }
+    const auto& lights = this->Pass->Maps->GetLights();
+    if (std::any_of(lights.begin(), lights.end(),
+          [](const vtkShadowMapManager::Light& l) { return l.Point; }))
+    {
+      // The cube maps' lookups in one loop where it is supported
+      // (vtkShadowCubeHardAll, vtkSoftShadowReceiverFS.glsl).
+      sources.AddFragmentExtension("GL_ARB_gpu_shader5");
+    }
     for (const std::string& extension : this->Pass->GetReceiverExtensions())
     {
       sources.AddFragmentExtension(extension);
@@ -796,11 +804,12 @@ std::string vtkSoftShadowPass::GetVisibilityExpression(int slot)
   const auto& light = this->Maps->GetLights()[slot];
   const std::string i = std::to_string(slot);
   const std::string m = std::to_string(light.MapIndex);
+  const auto& lights = this->Maps->GetLights();
+  const bool firstPoint = std::none_of(lights.begin(), lights.begin() + slot,
+    [](const vtkShadowMapManager::Light& l) { return l.Point; });
   const std::string hard = light.Point
-    ? "vtkShadowCubeLookup(vtkShadowCube[" + m + "], vtkShadowCubeCenter[" + m +
-      "], vtkShadowPositionWC, vtkShadowNormalWC, vtkShadowCubeTexel, vtkShadowNormalBias, "
-      "vtkShadowDistanceBias, vtkShadowCubeRange[" +
-      m + "], vtkShadowPCFRadius)"
+    ? std::string(firstPoint ? "vtkShadowCubeHardAll" : "vtkShadowCubeHardOf") +
+      "(vtkShadowPositionWC, vtkShadowNormalWC, " + m + ")"
     : "vtkShadowLookup(vtkShadowMap[" + m + "], vtkShadowWorldToMap[" + i +
       "], vtkShadowReceiver(" + i + ", vtkShadowPositionWC, vtkShadowNormalWC), " +
       "vtkShadowPCFRadius)";

@@ -63,6 +63,33 @@ uniform vec3 vtkShadowCubeCenter[VTK_SHADOW_CUBES];
 uniform float vtkShadowCubeRange[VTK_SHADOW_CUBES]; // 0: float map; else RGBA8 range
 uniform float vtkShadowCubeTexel;   // a texel's world size per unit of distance
 uniform float vtkShadowDistanceBias; // multiplicative, on squared distances
+
+// The hard lookup of cube map c: vtkShadowCubeHardAll() for the first point
+// light, vtkShadowCubeHardOf() for the others. With GL_ARB_gpu_shader5
+// (sampler arrays indexed by a loop counter) the first fills every cube's
+// visibility in one loop, so the shader holds one copy of the lookup
+// whatever the number of point lights (written once per light, llvmpipe
+// took 6 s to compile 16); without it each light has its own copy.
+#ifdef GL_ARB_gpu_shader5
+float vtkShadowCubeVisibility[VTK_SHADOW_CUBES];
+float vtkShadowCubeLookupAll(vec4 positionWC, vec3 normalWC, int wanted)
+{
+  for (int c = 0; c < VTK_SHADOW_CUBES; ++c)
+  {
+    vtkShadowCubeVisibility[c] = vtkShadowCubeLookup(vtkShadowCube[c], vtkShadowCubeCenter[c],
+      positionWC, normalWC, vtkShadowCubeTexel, vtkShadowNormalBias, vtkShadowDistanceBias,
+      vtkShadowCubeRange[c], vtkShadowPCFRadius);
+  }
+  return vtkShadowCubeVisibility[wanted];
+}
+#define vtkShadowCubeHardAll(p, n, c) vtkShadowCubeLookupAll(p, n, c)
+#define vtkShadowCubeHardOf(p, n, c) vtkShadowCubeVisibility[c]
+#else
+#define vtkShadowCubeHardAll(p, n, c)                                                             \
+  vtkShadowCubeLookup(vtkShadowCube[c], vtkShadowCubeCenter[c], p, n, vtkShadowCubeTexel,         \
+    vtkShadowNormalBias, vtkShadowDistanceBias, vtkShadowCubeRange[c], vtkShadowPCFRadius)
+#define vtkShadowCubeHardOf(p, n, c) vtkShadowCubeHardAll(p, n, c)
+#endif
 #endif
 
 #ifdef VTK_SHADOW_SCREEN_SPACE
