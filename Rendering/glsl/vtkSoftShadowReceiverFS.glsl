@@ -2,7 +2,8 @@
 // Inserted by vtkSoftShadowPass after VTK_SHADOW_LIGHTS (number of shadowed
 // lights), VTK_SHADOW_MAPS and VTK_SHADOW_CUBES (how many of them have a 2D
 // map, a cube map) and, for screen-space techniques, VTK_SHADOW_SCREEN_SPACE
-// are defined. Sampler arrays are indexed with constants only (GLSL 1.50).
+// are defined. Sampler arrays are indexed with constants (GLSL 1.50), but
+// for vtkShadowCubeLookupAll(), which needs GL_ARB_gpu_shader5.
 // Uses: vtkShadowSurfaceFS.glsl, vtkShadowNormalOffsetFS.glsl, vtkShadowCubeLookupFS.glsl.
 
 uniform mat4 vtkShadowWorldToMap[VTK_SHADOW_LIGHTS];
