@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
-# The module built against ParaView 5.11's own VTK (9.2), unattended on a fresh
-# Debian 12 (as root): installs what is missing, unpacks Debian's paraview,
-# paraview-dev and python3-paraview into build-paraview/prefix (installing
-# python3-paraview would remove python3-vtk9, which the rest of the project
-# needs; ParaView's CMake files are relocatable), builds the module there in
-# build-paraview/ and runs its C++ tests, image tests included. Exits
-# non-zero on any failure. The ParaView plugin (issue: a shadowed render view)
-# is not built yet. docs/paraview.md.
+# The ParaView plugin, unattended on a fresh Debian 12 (as root): installs
+# what is missing, unpacks Debian's paraview, paraview-dev and
+# python3-paraview into build-paraview/prefix (installing python3-paraview
+# would remove python3-vtk9, which the rest of the project needs; ParaView's
+# CMake files are relocatable), builds the module against ParaView's own VTK
+# 9.2 in build-paraview/ and runs its C++ tests there, image tests included,
+# builds the plugin (ParaView/) in build-paraview/plugin, writes pvpython and
+# pvbatch wrappers that find it all, runs the plugin's test in pvpython, and
+# ends with three lines: PLUGIN=, PVPYTHON= and PVBATCH=. Exits non-zero on
+# any failure. docs/paraview.md.
 #   bash scripts/paraview.sh [CTEST ARGUMENTS...]
 set -euo pipefail
 
@@ -17,7 +19,9 @@ cd "$root"
 packages=(paraview paraview-dev python3-paraview)
 build="$root/build-paraview"
 prefix="$build/prefix"
-softshadows_install_packages "${SOFTSHADOWS_PACKAGES[@]}"
+# ParaView's CMake configuration looks for Qt's development files.
+softshadows_install_packages "${SOFTSHADOWS_PACKAGES[@]}" qtbase5-dev qttools5-dev \
+  libqt5opengl5-dev libqt5svg5-dev qtxmlpatterns5-dev-tools
 
 if [ ! -f "$prefix/.unpacked" ]; then
   downloads="$build/downloads"
@@ -52,4 +56,34 @@ softshadows_build build-paraview "-DVTK_DIR=$vtk_dir"
 # The Python tests need ParaView's own Python, which conflicts with the
 # system's vtkmodules; the install test builds against the system VTK.
 softshadows_ctest build-paraview -E '^(Python|Install)\.' "$@"
-echo "VTK_DIR=$vtk_dir"
+
+# The module installed, and the plugin built against it and ParaView.
+install="$build/install"
+cmake --install "$build" --prefix "$install" >/dev/null
+plugin_build="$build/plugin"
+if [ ! -f "$plugin_build/CMakeCache.txt" ]; then
+  cmake -S "$root/ParaView" -B "$plugin_build" -DCMAKE_BUILD_TYPE=Release \
+    "-DParaView_DIR=$prefix/usr/lib/x86_64-linux-gnu/cmake/paraview-5.11" \
+    "-DSoftShadows_DIR=$install/lib/cmake/softshadows"
+fi
+cmake --build "$plugin_build" -j2
+plugin="$plugin_build/lib/SoftShadows/SoftShadows.so"
+
+# pvpython and pvbatch from the prefix, with its libraries and Python
+# modules (before the system's vtkmodules) and the module's libraries.
+for program in pvpython pvbatch; do
+  cat >"$build/$program" <<WRAPPER
+#!/bin/sh
+# $program from Debian's ParaView unpacked in $prefix (scripts/paraview.sh).
+export LD_LIBRARY_PATH="$prefix/usr/lib/x86_64-linux-gnu:$install/lib\${LD_LIBRARY_PATH:+:\$LD_LIBRARY_PATH}"
+export PYTHONPATH="$prefix/usr/lib/python3/dist-packages\${PYTHONPATH:+:\$PYTHONPATH}"
+exec "$prefix/usr/bin/$program" "\$@"
+WRAPPER
+  chmod +x "$build/$program"
+done
+
+xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" \
+  "$build/pvpython" --force-offscreen-rendering "$root/Testing/ParaView/test_plugin.py" "$plugin"
+echo "PLUGIN=$plugin"
+echo "PVPYTHON=$build/pvpython"
+echo "PVBATCH=$build/pvbatch"
