@@ -58,9 +58,7 @@ std::string vtkOmnidirectionalShadowPass::GetVisibilityExpression(int slot)
   // of point lights: written once per light, llvmpipe's compile time grew
   // from 1.5 s at 6 lights to 33 s at 8.
   const std::string m = std::to_string(light.MapIndex);
-  const bool first =
-    std::none_of(this->Maps->GetLights().begin(), this->Maps->GetLights().begin() + slot,
-      [](const vtkShadowMapManager::Light& l) { return l.Point; });
+  const bool first = this->IsFirstPointLight(slot);
   return first ? "vtkOmniPoissonAll(vtkShadowPositionWC, vtkShadowNormalWC, " + m + ")"
                : "omniVisibility[" + m + "]";
 }

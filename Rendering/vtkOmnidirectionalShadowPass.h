@@ -77,12 +77,6 @@ protected:
   int GetPCFRadius() const override;
   std::string GetVisibilityDeclarations() override;
   std::string GetVisibilityExpression(int slot) override;
-  std::vector<std::string> GetReceiverExtensions() const override
-  {
-    // The Poisson lookup loops over the cube maps: sampler arrays indexed
-    // by a loop counter.
-    return { "GL_ARB_gpu_shader5" };
-  }
   void SetVisibilityUniforms(vtkShaderProgram* program) override;
 
   int Filter = Poisson;

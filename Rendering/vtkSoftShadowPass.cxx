@@ -183,7 +183,8 @@ public:
           [](const vtkShadowMapManager::Light& l) { return l.Point; }))
     {
       // The cube maps' lookups in one loop where it is supported
-      // (vtkShadowCubeHardAll, vtkSoftShadowReceiverFS.glsl).
+      // (vtkShadowCubeHardAll, vtkSoftShadowReceiverFS.glsl; omni's Poisson
+      // lookup, vtkOmniPoissonAll, needs it).
       sources.AddFragmentExtension("GL_ARB_gpu_shader5");
     }
     for (const std::string& extension : this->Pass->GetReceiverExtensions())
@@ -799,16 +800,22 @@ bool vtkSoftShadowPass::CheckCompute(vtkOpenGLRenderWindow* context)
 }
 
 //------------------------------------------------------------------------------
+bool vtkSoftShadowPass::IsFirstPointLight(int slot) const
+{
+  const auto& lights = this->Maps->GetLights();
+  return lights[slot].Point &&
+    std::none_of(lights.begin(), lights.begin() + slot,
+      [](const vtkShadowMapManager::Light& l) { return l.Point; });
+}
+
+//------------------------------------------------------------------------------
 std::string vtkSoftShadowPass::GetVisibilityExpression(int slot)
 {
   const auto& light = this->Maps->GetLights()[slot];
   const std::string i = std::to_string(slot);
   const std::string m = std::to_string(light.MapIndex);
-  const auto& lights = this->Maps->GetLights();
-  const bool firstPoint = std::none_of(lights.begin(), lights.begin() + slot,
-    [](const vtkShadowMapManager::Light& l) { return l.Point; });
   const std::string hard = light.Point
-    ? std::string(firstPoint ? "vtkShadowCubeHardAll" : "vtkShadowCubeHardOf") +
+    ? std::string(this->IsFirstPointLight(slot) ? "vtkShadowCubeHardAll" : "vtkShadowCubeHardOf") +
       "(vtkShadowPositionWC, vtkShadowNormalWC, " + m + ")"
     : "vtkShadowLookup(vtkShadowMap[" + m + "], vtkShadowWorldToMap[" + i +
       "], vtkShadowReceiver(" + i + ", vtkShadowPositionWC, vtkShadowNormalWC), " +

@@ -375,6 +375,14 @@ protected:
   virtual std::string GetVisibilityExpression(int slot);
 
   /**
+   * Whether shadowed light `slot` is the first point light: the one whose
+   * visibility expression fills every cube map's in one loop, which the
+   * others then read (vtkShadowCubeLookupAll in vtkSoftShadowReceiverFS.glsl,
+   * and techniques' own loops).
+   */
+  bool IsFirstPointLight(int slot) const;
+
+  /**
    * Upload the technique's own uniforms to a receiver's program.
    */
   virtual void SetVisibilityUniforms(vtkShaderProgram*) {}
