@@ -451,17 +451,13 @@ def check_odd_meshes(technique):
                       % (technique, name, visibility[under].max(), visibility[beside].min()))
 
 
-def api_ball(pass_class, light_radius=0.3, light_x=0.0, ball_resolution=None, casters=()):
-    """The ball over the ground through the Python API, drawn shadow-only by
-    a `pass_class` pass into a 200 x 150 off-screen window, under a spot
-    light at (light_x, 5, 0); `casters`: more polydata among the casters.
-    Returns (window, light, pass)."""
+def add_ground_and_ball(renderer, ball_resolution=None, casters=()):
+    """The ground (6 x 6 at y = 0) and the ball (radius 0.5 at (0, 1, 0)) as
+    actors of `renderer`, then `casters` (more polydata or sources)."""
     from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
-    from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkPolyDataMapper,
-                                             vtkRenderWindow, vtkRenderer)
-    import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (OpenGL factory)
+    from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper
 
-    def add(renderer, data):
+    def add(data):
         mapper = vtkPolyDataMapper()
         if hasattr(data, "GetOutputPort"):
             mapper.SetInputConnection(data.GetOutputPort())
@@ -471,21 +467,32 @@ def api_ball(pass_class, light_radius=0.3, light_x=0.0, ball_resolution=None, ca
         a.SetMapper(mapper)
         renderer.AddActor(a)
 
-    renderer = vtkRenderer()
     plane = vtkPlaneSource()
     plane.SetOrigin(-3, 0, -3)
     plane.SetPoint1(3, 0, -3)
     plane.SetPoint2(-3, 0, 3)
-    add(renderer, plane)
+    add(plane)
     ball = vtkSphereSource()
     ball.SetCenter(0, 1, 0)
     ball.SetRadius(0.5)
     if ball_resolution:
         ball.SetThetaResolution(ball_resolution)
         ball.SetPhiResolution(ball_resolution)
-    add(renderer, ball)
+    add(ball)
     for data in casters:
-        add(renderer, data)
+        add(data)
+
+
+def api_ball(pass_class, light_radius=0.3, light_x=0.0, ball_resolution=None, casters=()):
+    """The ball over the ground through the Python API, drawn shadow-only by
+    a `pass_class` pass into a 200 x 150 off-screen window, under a spot
+    light at (light_x, 5, 0); `casters`: more polydata among the casters.
+    Returns (window, light, pass)."""
+    from vtkmodules.vtkRenderingCore import vtkLight, vtkRenderWindow, vtkRenderer
+    import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (OpenGL factory)
+
+    renderer = vtkRenderer()
+    add_ground_and_ball(renderer, ball_resolution, casters)
     light = vtkLight()
     light.SetLightTypeToSceneLight()
     light.SetPositional(True)

@@ -7,10 +7,8 @@ import math
 
 import numpy as np
 from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow
-from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
 from vtkmodules.vtkImagingSources import vtkImageCanvasSource2D
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkPolyDataMapper,
-                                         vtkRenderWindow, vtkRenderer, vtkTexture)
+from vtkmodules.vtkRenderingCore import vtkLight, vtkRenderWindow, vtkRenderer, vtkTexture
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (OpenGL factory)
 
 from vtksoftshadows import (vtkAliasFreeShadowPass, vtkContactHardeningShadowPass,
@@ -29,19 +27,7 @@ def scene(pass_class, textured=False):
     bright point light beside it, then 38 dim ones, spot and point in turn,
     each farther from the focal point than the one before."""
     renderer = vtkRenderer()
-    plane = vtkPlaneSource()
-    plane.SetOrigin(-3, 0, -3)
-    plane.SetPoint1(3, 0, -3)
-    plane.SetPoint2(-3, 0, 3)
-    ball = vtkSphereSource()
-    ball.SetCenter(0, 1, 0)
-    ball.SetRadius(0.5)
-    for source in (plane, ball):
-        mapper = vtkPolyDataMapper()
-        mapper.SetInputConnection(source.GetOutputPort())
-        actor = vtkActor()
-        actor.SetMapper(mapper)
-        renderer.AddActor(actor)
+    st.add_ground_and_ball(renderer)
     if textured:
         canvas = vtkImageCanvasSource2D()
         canvas.SetExtent(0, 7, 0, 7, 0, 0)
