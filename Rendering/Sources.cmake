@@ -21,6 +21,7 @@ set(softshadows_rendering_framework_classes
   vtkShadowDrawer
   vtkShadowGeometry
   vtkShadowMapManager
+  vtkShadowParallelMaps
   vtkShadowScreenBuffers
   vtkShadowShaderHooks
   vtkShadowStage)

@@ -209,6 +209,10 @@ protected:
   bool RenderShadowMaps(const vtkRenderState* s) override;
   bool RenderScreenSpace(const vtkRenderState* s) override;
   bool UsesScreenSpace() const override { return true; }
+  const char* GetUncombinedLightSpaceData() const override
+  {
+    return "per-pixel light-space lists (each process tests only its own triangles)";
+  }
   std::string GetCameraPassImplementation() override;
   bool SupportsPointLights() const override { return true; }
   ReceiverShading GetReceiverShading(const vtkShadowShaderSources& sources) override;

@@ -9,6 +9,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
+#include "vtkShadowParallelMaps.h"
 #include "vtkTextureObject.h"
 
 #include <glm/geometric.hpp>
@@ -82,7 +83,8 @@ int vtkShadowMapManager::Update(vtkRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
-int vtkShadowMapManager::Update(vtkRenderer* renderer, const Budget& budget)
+int vtkShadowMapManager::Update(
+  vtkRenderer* renderer, const Budget& budget, vtkShadowParallelMaps* parallel)
 {
   this->Renderer = renderer;
   this->Unshadowed = 0;
@@ -91,12 +93,15 @@ int vtkShadowMapManager::Update(vtkRenderer* renderer, const Budget& budget)
   previous.swap(this->Lights);
 
   renderer->ComputeVisiblePropBounds(this->SceneBounds);
-  if (!vtkMath::AreBoundsInitialized(this->SceneBounds))
+  const bool finite = parallel && parallel->IsParallel()
+    ? parallel->CombineBounds(this->SceneBounds)
+    : std::all_of(
+        this->SceneBounds, this->SceneBounds + 6, [](double v) { return std::isfinite(v); });
+  if (finite && !vtkMath::AreBoundsInitialized(this->SceneBounds))
   {
     return 0; // nothing to shadow
   }
-  if (!std::all_of(
-        this->SceneBounds, this->SceneBounds + 6, [](double v) { return std::isfinite(v); }))
+  if (!finite)
   {
     vtkGenericWarningMacro("Scene bounds are not finite (NaN or infinite points in a visible "
                            "prop): no shadows this frame.");

@@ -28,6 +28,7 @@ class vtkLight;
 class vtkOpenGLRenderWindow;
 class vtkRenderer;
 class vtkShaderProgram;
+class vtkShadowParallelMaps;
 class vtkTextureObject;
 class vtkWindow;
 
@@ -114,8 +115,12 @@ public:
    * not change. Each is taken if it still fits; the others are left
    * unshadowed (GetNumberOfUnshadowedLights()) and light the scene as VTK
    * lights it. The shadowed lights keep the collection's order.
+   *
+   * With `parallel` (a parallel render), the frusta are fitted to the
+   * bounds of every process's visible props, the same on every process.
    */
-  int Update(vtkRenderer* renderer, const Budget& budget);
+  int Update(
+    vtkRenderer* renderer, const Budget& budget, vtkShadowParallelMaps* parallel = nullptr);
   int Update(vtkRenderer* renderer); ///< every light, point lights too
 
   /// Lights the last Update() left unshadowed because the budget had no room for them.

@@ -180,6 +180,7 @@ protected:
   std::vector<ReceiverTexture> GetReceiverTextures() override;
   /// Each light's signed distances and its lookup texture.
   int GetReceiverTexturesPerLight(bool) const override { return 2; }
+  const char* GetUncombinedLightSpaceData() const override { return "silhouette distance maps"; }
 
   int Variant = Soft;
   double ExpectedWidth = 0.0;

@@ -157,6 +157,10 @@ protected:
   /// Each light's smoothie buffer (spot and directional lights' linear
   /// depths take the place of the framework's map).
   int GetReceiverTexturesPerLight(bool) const override { return 1; }
+  const char* GetUncombinedLightSpaceData() const override
+  {
+    return "smoothie depth and alpha buffers";
+  }
 
   double Thickness = 0.0;
   double PenumbraScale = 0.7;

@@ -7,6 +7,7 @@
 #include "vtkInformationDoubleKey.h"
 #include "vtkLight.h"
 #include "vtkMatrix4x4.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -27,6 +28,7 @@
 #include "vtkShadowMapManager.h"
 #include "vtkShadowMapperCode.h"
 #include "vtkShadowMatrices.h"
+#include "vtkShadowParallelMaps.h"
 #include "vtkShadowScreenBuffers.h"
 #include "vtkShadowShaderHooks.h"
 #include "vtkShadowStage.h"
@@ -401,6 +403,7 @@ vtkSoftShadowPass::vtkSoftShadowPass()
   , DistanceStage(new vtkShadowDistanceStage)
   , CameraStage(new vtkCameraStage(this))
   , ReceiverStage(new vtkReceiverStage(this))
+  , Parallel(new vtkShadowParallelMaps)
 {
   // The default delegate draws translucency as VTK's renderer does without a
   // pass: order independent, or depth-peeled when the renderer asks.
@@ -417,6 +420,23 @@ vtkSoftShadowPass::vtkSoftShadowPass()
 vtkSoftShadowPass::~vtkSoftShadowPass()
 {
   this->SetDelegatePass(nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkSoftShadowPass::SetController(vtkMultiProcessController* controller)
+{
+  if (controller != this->Parallel->GetController())
+  {
+    this->Parallel->SetController(controller);
+    this->UncombinedReported = false;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkMultiProcessController* vtkSoftShadowPass::GetController() const
+{
+  return this->Parallel->GetController();
 }
 
 //------------------------------------------------------------------------------
@@ -513,9 +533,14 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   vtkShadowMapManager::Budget budget;
   budget.PointLights = this->SupportsPointLights();
   budget.TextureUnits = std::max(this->ShadowTextureUnits(), 0);
+  if (this->Parallel->IsParallel())
+  {
+    // Every process must shadow the same lights: their maps are reduced together.
+    budget.TextureUnits = this->Parallel->CombineMinimum(budget.TextureUnits);
+  }
   budget.Units = [this](const vtkShadowMapManager::Light& light)
   { return this->ReceiverTextures(light.Point); };
-  this->Maps->Update(renderer, budget);
+  this->Maps->Update(renderer, budget, this->Parallel.get());
   this->Casters->Update(renderer);
   auto& shadowed = this->Maps->GetLights();
   const int points = this->Maps->GetNumberOfSkippedPointLights();
@@ -525,6 +550,16 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
                   << " point light(s) (positional, cone angle >= 90): " << this->GetClassName()
                   << " does not shadow point lights yet; they are drawn without shadows.");
     this->PointLightReported = true;
+  }
+  const char* uncombined = this->GetUncombinedLightSpaceData();
+  if (uncombined && this->Parallel->IsParallel() && !this->UncombinedReported)
+  {
+    vtkErrorMacro(<< this->GetClassName() << " does not combine its " << uncombined
+                  << " across the " << this->Parallel->GetController()->GetNumberOfProcesses()
+                  << " processes of a parallel render yet: shadows that casters on one process "
+                     "cast on another's receivers are missing or hard. hard, reference, contact "
+                     "and omni combine all they draw.");
+    this->UncombinedReported = true;
   }
   const int unshadowed = this->Maps->GetNumberOfUnshadowedLights();
   if (unshadowed != this->ReportedUnshadowed)
@@ -688,7 +723,15 @@ bool vtkSoftShadowPass::RenderDepthMap(
   // slope term grows with the kernel.
   setup.SlopeBias = this->SlopeScaledBias * (1.0 + this->GetPCFRadius());
   setup.ConstantBias = this->ConstantBias;
-  return this->Drawer->Draw(s, setup);
+  if (!this->Drawer->Draw(s, setup))
+  {
+    return false;
+  }
+  if (this->Parallel->IsParallel())
+  {
+    this->Parallel->CombineDepth(target);
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -705,14 +748,24 @@ bool vtkSoftShadowPass::RenderDistanceCube(
   setup.Stage = this->DistanceStage.get();
   if (this->SinglePassCubeMaps)
   {
-    return this->Drawer->Draw(s, setup); // all six faces, layered
-  }
-  for (setup.CubeFace = 0; setup.CubeFace < 6; ++setup.CubeFace)
-  {
-    if (!this->Drawer->Draw(s, setup))
+    if (!this->Drawer->Draw(s, setup)) // all six faces, layered
     {
       return false;
     }
+  }
+  else
+  {
+    for (setup.CubeFace = 0; setup.CubeFace < 6; ++setup.CubeFace)
+    {
+      if (!this->Drawer->Draw(s, setup))
+      {
+        return false;
+      }
+    }
+  }
+  if (this->Parallel->IsParallel())
+  {
+    this->Parallel->CombineCube(cube);
   }
   return true;
 }
@@ -865,6 +918,7 @@ void vtkSoftShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DepthPrePass: " << this->DepthPrePass << "\n";
   os << indent << "ShadowOnlyLight: " << this->ShadowOnlyLight << "\n";
   os << indent << "ReservedTextureUnits: " << this->ReservedTextureUnits << "\n";
+  os << indent << "Controller: " << this->Parallel->GetController() << "\n";
   os << indent << "DelegatePass: ";
   if (this->DelegatePass)
   {

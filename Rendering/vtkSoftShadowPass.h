@@ -65,6 +65,7 @@
 
 class vtkInformationDoubleKey;
 class vtkLight;
+class vtkMultiProcessController;
 class vtkDualDepthPeelingPass;
 class vtkOpenGLRenderWindow;
 class vtkOrderIndependentTranslucentPass;
@@ -79,6 +80,7 @@ class vtkShadowDepthStage;
 class vtkShadowDistanceStage;
 class vtkShadowDrawer;
 class vtkShadowMapManager;
+class vtkShadowParallelMaps;
 class vtkShadowScreenBuffers;
 struct vtkShadowDrawSetup;
 struct vtkShadowFrustum;
@@ -213,6 +215,23 @@ public:
   vtkGetMacro(ReservedTextureUnits, int);
   ///@}
 
+  ///@{
+  /**
+   * The processes of a sort-last parallel render (e.g. ParaView's pvbatch
+   * under MPI), each drawing its piece of the data. With more than one, the
+   * light frusta are fitted to every process's bounds and the light-space
+   * depth and distance maps are reduced across the processes, nearest wins,
+   * before receivers read them (vtkShadowParallelMaps), so that a caster on
+   * one process shadows receivers on every other. Every process must then
+   * render every frame, with the same lights and technique. Techniques whose
+   * own light-space data is not combined yet say so once
+   * (GetUncombinedLightSpaceData()). Default none: each process shadows
+   * with what it draws.
+   */
+  void SetController(vtkMultiProcessController* controller);
+  vtkMultiProcessController* GetController() const;
+  ///@}
+
   /**
    * Number of lights that cast a shadow in the last frame.
    */
@@ -278,6 +297,14 @@ protected:
    * without its shadows.
    */
   bool CheckCompute(vtkOpenGLRenderWindow* context);
+
+  /**
+   * What of the technique's own light-space data (beyond the framework's
+   * depth and distance maps, which are combined) a parallel render does not
+   * combine across processes yet, e.g. "silhouette distance maps"; null when
+   * everything is combined (the default).
+   */
+  virtual const char* GetUncombinedLightSpaceData() const { return nullptr; }
 
   /**
    * Step 3, optional: screen-space passes. Techniques that override it return
@@ -478,6 +505,8 @@ private:
     FrameReceiverTextures; ///< GetReceiverTextures() while receivers draw
   bool LinearMaps = false;
   bool PointLightReported = false;
+  bool UncombinedReported = false;
+  std::unique_ptr<vtkShadowParallelMaps> Parallel;
   bool ComputeReported = false;
   int ReportedUnshadowed = 0;  ///< the count the last warning gave
   int TextureUnits = 0;        ///< a receiver's units, in the last frame's context
