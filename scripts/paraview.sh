@@ -6,8 +6,9 @@
 # CMake files are relocatable), builds the module against ParaView's own VTK
 # 9.2 in build-paraview/ and runs its C++ tests there, image tests included,
 # builds the plugin (ParaView/) in build-paraview/plugin, writes pvpython and
-# pvbatch wrappers that find it all, runs the plugin's test in pvpython, and
-# ends with three lines: PLUGIN=, PVPYTHON= and PVBATCH=. Exits non-zero on
+# pvbatch wrappers that find it all, runs the plugin's test in pvpython and
+# its parallel test in pvbatch on one and two MPI ranks, and ends with three
+# lines: PLUGIN=, PVPYTHON= and PVBATCH=. Exits non-zero on
 # any failure. docs/paraview.md.
 #   bash scripts/paraview.sh [CTEST ARGUMENTS...]
 set -euo pipefail
@@ -82,8 +83,19 @@ WRAPPER
   chmod +x "$build/$program"
 done
 
-xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" \
-  "$build/pvpython" --force-offscreen-rendering "$root/Testing/ParaView/test_plugin.py" "$plugin"
+xvfb() { xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" "$@"; }
+xvfb "$build/pvpython" --force-offscreen-rendering "$root/Testing/ParaView/test_plugin.py" "$plugin"
+# Across MPI ranks: one rank's images, then two ranks' checked against them.
+parallel="$build/parallel-test"
+rm -rf "$parallel"
+mkdir -p "$parallel"
+xvfb "$build/pvbatch" --force-offscreen-rendering "$root/Testing/ParaView/test_parallel.py" \
+  "$plugin" "$parallel"
+xvfb mpirun --allow-run-as-root --oversubscribe -np 2 "$build/pvbatch" --force-offscreen-rendering \
+  "$root/Testing/ParaView/test_parallel.py" "$plugin" "$parallel"
+# The README's example, as a user runs it.
+xvfb "$build/pvpython" --force-offscreen-rendering "$root/Examples/Python/paraview_shadows.py" \
+  "$plugin" "$build/paraview_shadows.png"
 echo "PLUGIN=$plugin"
 echo "PVPYTHON=$build/pvpython"
 echo "PVBATCH=$build/pvbatch"

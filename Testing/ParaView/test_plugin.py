@@ -1,95 +1,111 @@
 """The ParaView plugin in pvpython (scripts/paraview.sh runs it): a ball over
-a plane under a spot light, drawn by ParaView's own render view and by the
-plugin's, under every choice of Shadow Technique. The plugin's view darkens
-the ground under the ball, where the light's shadow falls, and leaves the
-rest as ParaView draws it.
+a plane under a spot light of radius 0.3 (ParaView's own light Radius),
+drawn by ParaView's render view and by the plugin's under every choice of
+Shadow Technique. For each, the plugin's view
+- puts the shadow where geometry says: dark under the ball's centre and
+  inside the tangent cone from the light, lit well outside it,
+- softens it with the light's radius (more partly shadowed pixels than with
+  Radius 0), but for the hard variants, which stay as they are, and omni,
+  which softens point lights only (checked with one),
+- draws the rest as ParaView draws it,
+- matches its baseline image (Testing/ParaView/Baseline).
 
 The plugin's view is one view whose technique changes, as a user changes it.
-The script ends by falling off its end or by an exception, never sys.exit():
-Debian's pvpython 5.11 crashes while tearing down its views after
-sys.exit(), plugin or not.
 
-    PVPYTHON test_plugin.py PLUGIN
+    PVPYTHON test_plugin.py PLUGIN [OUTPUT_FOLDER]
 """
 import os
 import sys
 import tempfile
 
 import numpy as np
-from paraview.simple import (AddLight, CreateView, LoadPlugin, Plane, Render, SaveScreenshot,
-                             Show, Sphere)
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOImage import vtkPNGReader
+from paraview.simple import LoadPlugin, Render
 
-SIZE = [160, 120]
-failures = []
+import pvshadows
+from pvshadows import check
 
-
-def check(condition, message):
-    print(("ok: " if condition else "FAIL: ") + message)
-    if not condition:
-        failures.append(message)
+# Hard whatever the radius; omni softens only point lights' shadows.
+HARD = ("hard", "silhouette:hard", "aliasfree:hard", "omni", "omni:pcf4")
+BASELINES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "Baseline")
 
 
-def grey(path):
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    image = reader.GetOutput()
-    pixels = vtk_to_numpy(image.GetPointData().GetScalars()).astype(float)
-    return pixels[:, :3].mean(axis=1).reshape(SIZE[1], SIZE[0])
-
-
-def scene(proxy, technique=None):
-    view = CreateView(proxy)
-    view.ViewSize = SIZE
-    view.OrientationAxesVisibility = 0
-    view.UseLight = 0  # the light kit off: only the spot light below
-    if technique is not None:
-        view.ShadowTechnique = technique
-    Show(Plane(Origin=[-3, 0, -3], Point1=[3, 0, -3], Point2=[-3, 0, 3]), view)
-    Show(Sphere(Center=[0, 1, 0], Radius=0.5, ThetaResolution=32, PhiResolution=32), view)
-    light = AddLight(view=view)
-    light.Coords = "Scene"
-    light.Type = "Positional"
-    light.Position = [0.0, 5.0, 0.0]
-    light.FocalPoint = [0.0, 0.0, 0.0]
-    light.ConeAngle = 50
-    Render(view)  # the first render resets the camera: set it after
-    view.CameraPosition = [0, 5, 7]
-    view.CameraFocalPoint = [0, 0.5, 0]
-    view.CameraViewUp = [0, 1, 0]
-    Render(view)
-    return view
+def penumbra_pixels(shaded, plain, umbra):
+    """Pixels darkened by between 15% and 85% of the umbra's darkening."""
+    darkening = (plain - shaded) / max(umbra, 1.0)
+    return int(((darkening > 0.15) & (darkening < 0.85)).sum())
 
 
 LoadPlugin(sys.argv[1], remote=False, ns=globals())
+output = sys.argv[2] if len(sys.argv) > 2 else None
 with tempfile.TemporaryDirectory() as folder:
-    path = os.path.join(folder, "plain.png")
-    SaveScreenshot(path, scene("RenderView"), ImageResolution=SIZE)
-    plain = grey(path)
-    view = scene("ShadowRenderView")
+    plain_view, _, _ = pvshadows.scene("RenderView")
+    plain, _ = pvshadows.screenshot(plain_view, folder, "plain")
+    view, light, _ = pvshadows.scene("ShadowRenderView")
     names = view.GetProperty("ShadowTechnique").Available
     check(len(names) == 12 and names[0] == "hard" and "smoothies" in names,
           "Shadow Technique offers every technique and variant: %s" % names)
+
+    r = pvshadows.ground_shadow_radius()
+    centre = pvshadows.pixel(view, [0.0, 0.0, 0.0])
+    umbra = [pvshadows.pixel(view, [s * 0.5 * r, 0.0, 0.0]) for s in (-1, 1)]
+    outside = [pvshadows.pixel(view, p) for p in ([1.6, 0, 0], [-1.6, 0, 0], [0, 0, 1.6])]
     for name in names:
         view.ShadowTechnique = name
+        light.Radius = 0.0
         Render(view)
-        path = os.path.join(folder, name.replace(":", "-") + ".png")
-        SaveScreenshot(path, view, ImageResolution=SIZE)
-        shaded = grey(path)
-        darker = (plain - shaded) > 40
-        share = darker.mean()
-        rows, columns = np.nonzero(darker)
-        # The shadow lies on the ground under the ball: below the image's
-        # middle (VTK's images start at the bottom), around its centre.
-        where = 1.0 - rows.mean() / SIZE[1] if rows.size else 0.0
-        across = abs(columns.mean() / SIZE[0] - 0.5) if columns.size else 1.0
-        same = (np.abs(plain - shaded) < 8).mean()
-        check(0.005 < share < 0.2 and where > 0.45 and across < 0.1 and same > 0.75,
-              "%s: %.1f%% of pixels in shadow, centred at %.2f down and %.2f across, "
-              "%.0f%% as ParaView draws them" % (name, 100 * share, where, across, 100 * same))
+        point_light, _ = pvshadows.screenshot(view, folder, name + "-radius0")
+        light.Radius = pvshadows.LIGHT_RADIUS
+        Render(view)
+        shaded, path = pvshadows.screenshot(view, folder, name)
+        if output:
+            os.makedirs(output, exist_ok=True)
+            os.replace(path, os.path.join(output, os.path.basename(path)))
+            path = os.path.join(output, os.path.basename(path))
 
-if failures:
-    raise RuntimeError("%d failures" % len(failures))
-print("ok")
+        darkening = plain - shaded
+        deepest = darkening[centre]
+        dark = all(darkening[p] > 0.6 * deepest for p in umbra) and deepest > 40
+        lit = all(abs(darkening[p]) < 8 for p in outside)
+        check(dark and lit, "%s: dark under the ball (%.0f levels, %.0f and %.0f at half the "
+              "tangent cone's %.2f), lit outside it (%s levels)" % (
+                  name, deepest, darkening[umbra[0]], darkening[umbra[1]], r,
+                  ", ".join("%.0f" % darkening[p] for p in outside)))
+
+        soft = penumbra_pixels(shaded, plain, deepest)
+        hard = penumbra_pixels(point_light, plain, deepest)
+        ratio = soft / max(hard, 1)
+        if name in HARD:
+            check(ratio < 1.3, "%s: hard whatever the radius: %d partly shadowed pixels with "
+                  "radius %.1f, %d with 0" % (name, soft, pvshadows.LIGHT_RADIUS, hard))
+        else:
+            check(ratio > 1.5, "%s: the light's radius widens the penumbra: %d partly shadowed "
+                  "pixels with radius %.1f, %d with 0" % (name, soft, pvshadows.LIGHT_RADIUS,
+                                                          hard))
+
+        same = (np.abs(plain - shaded) < 8).mean()
+        check(same > 0.75, "%s: %.0f%% of pixels as ParaView draws them" % (name, 100 * same))
+
+        baseline_path = os.path.join(BASELINES, os.path.basename(path))
+        if not os.path.exists(baseline_path):
+            check(False, "%s: no baseline %s" % (name, baseline_path))
+            continue
+        baseline = pvshadows.grey(baseline_path)
+        off = np.abs(baseline - shaded)
+        check(off.mean() < 1.0 and (off > 24).mean() < 0.002,
+              "%s: as its baseline (mean difference %.2f levels, %.2f%% of pixels off by more "
+              "than 24)" % (name, off.mean(), 100 * (off > 24).mean()))
+
+    # omni's own case: a point light (a cone of 90 degrees or more).
+    view.ShadowTechnique = "omni"
+    light.ConeAngle = 90
+    light.Radius = 0.0
+    Render(view)
+    point_light, _ = pvshadows.screenshot(view, folder, "omni-point-radius0")
+    light.Radius = pvshadows.LIGHT_RADIUS
+    Render(view)
+    shaded, _ = pvshadows.screenshot(view, folder, "omni-point")
+    changed = int((np.abs(shaded - point_light) > 16).sum())
+    check(changed > 500, "omni, point light: the radius softens the shadow (%d pixels change "
+          "by more than 16 levels)" % changed)
+
+pvshadows.finish()

@@ -3,6 +3,7 @@
 #include "vtkAliasFreeShadowPass.h"
 #include "vtkContactHardeningShadowPass.h"
 #include "vtkHardShadowPass.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkOmnidirectionalShadowPass.h"
 #include "vtkPVSynchronizedRenderer.h"
@@ -49,6 +50,28 @@ void vtkPVShadowRenderView::SetShadowMapSize(int size)
     this->ShadowMapSize = this->Pass->GetMapSize(); // clamped as the pass clamps it
     this->Modified();
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkPVShadowRenderView::SetLightRadius(vtkLight* light, double radius)
+{
+  if (light && radius != vtkSoftShadowPass::GetRadius(light))
+  {
+    vtkSoftShadowPass::SetRadius(radius, light);
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPVShadowRenderView::AboutToRenderOnLocalProcess(bool interactive)
+{
+  this->Superclass::AboutToRenderOnLocalProcess(interactive);
+  // Each rank draws its own piece only when the synchronized renderers
+  // composite and the data is not the same everywhere (tile displays, CAVEs).
+  vtkPVSynchronizedRenderer* sync = this->SynchronizedRenderers;
+  const bool pieces = sync->GetEnabled() && !sync->GetDataReplicatedOnAllProcesses();
+  this->Pass->SetController(
+    this->CombineShadowMaps && pieces ? vtkMultiProcessController::GetGlobalController() : nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -107,5 +130,6 @@ void vtkPVShadowRenderView::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ShadowTechnique: " << this->ShadowTechnique << "\n";
   os << indent << "ShadowMapSize: " << this->ShadowMapSize << "\n";
+  os << indent << "CombineShadowMaps: " << this->CombineShadowMaps << "\n";
   os << indent << "Pass: " << this->Pass->GetClassName() << "\n";
 }

@@ -8,9 +8,15 @@
  * ShadowTechniques, the names `softshadows techniques` lists); ShadowMapSize
  * is the pass's MapSize. The other parameters keep the classes' defaults.
  *
- * Not yet: light sizes from ParaView's light `Radius` (Debian's ParaView,
- * built without ray tracing, drops it in vtkPVLight::SetRadius), and maps
- * combined across MPI ranks.
+ * Light sizes are ParaView's light `Radius` property: ParaView built without
+ * ray tracing drops it in vtkPVLight::SetRadius(), so the view's proxy
+ * (vtkSMShadowRenderViewProxy) hands each light's value to SetLightRadius()
+ * on every process before rendering.
+ *
+ * In a distributed render (pvbatch or pvserver on MPI ranks, each rank with
+ * its piece of the data) the pass combines its light-space maps across the
+ * ranks (vtkSoftShadowPass::SetController()), so that a piece on one rank
+ * shadows the pieces of the others; CombineShadowMaps turns that off.
  */
 
 #ifndef vtkPVShadowRenderView_h
@@ -20,6 +26,7 @@
 #include "vtkSmartPointer.h"          // for vtkSmartPointer
 #include "vtkSoftShadowsViewModule.h" // for export macro
 
+class vtkLight;
 class vtkSoftShadowPass;
 
 class VTKSOFTSHADOWSVIEW_EXPORT vtkPVShadowRenderView : public vtkPVRenderView
@@ -64,9 +71,28 @@ public:
   vtkGetMacro(ShadowMapSize, int);
   ///@}
 
+  ///@{
+  /**
+   * Whether a distributed render combines the light-space maps across the
+   * ranks. Off, each rank's casters shadow only its own receivers (right
+   * only when every rank holds all the casters). Default on.
+   */
+  vtkSetMacro(CombineShadowMaps, bool);
+  vtkGetMacro(CombineShadowMaps, bool);
+  ///@}
+
+  /**
+   * The size of `light`, as vtkSoftShadowPass::SetRadius(): world units for
+   * positional lights, degrees of angular radius for directional ones.
+   */
+  void SetLightRadius(vtkLight* light, double radius);
+
 protected:
   vtkPVShadowRenderView();
   ~vtkPVShadowRenderView() override;
+
+  /// Combine maps across the ranks only when the ranks composite their images.
+  void AboutToRenderOnLocalProcess(bool interactive) override;
 
 private:
   vtkPVShadowRenderView(const vtkPVShadowRenderView&) = delete;
@@ -76,6 +102,7 @@ private:
 
   int ShadowTechnique = Contact;
   int ShadowMapSize = 1024;
+  bool CombineShadowMaps = true;
   vtkSmartPointer<vtkSoftShadowPass> Pass;
 };
 

@@ -1,0 +1,106 @@
+"""What the ParaView tests share: the scene (a ball over a plane under a spot
+light of radius 0.3), reading screenshots, projecting world points to
+pixels, and checks that count failures."""
+import os
+
+import numpy as np
+from paraview.simple import (AddLight, CreateView, Plane, ProcessIdScalars, Render,
+                             SaveScreenshot, Show, Sphere)
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOImage import vtkPNGReader
+
+SIZE = [240, 180]
+LIGHT = [0.0, 3.0, 0.0]
+BALL = [0.0, 1.2, 0.0]
+BALL_RADIUS = 0.5
+LIGHT_RADIUS = 0.3
+failures = []
+
+
+def check(condition, message):
+    print(("ok: " if condition else "FAIL: ") + message, flush=True)
+    if not condition:
+        failures.append(message)
+
+
+def finish():
+    """Raises when a check failed. (Never sys.exit(): Debian's pvpython 5.11
+    crashes while tearing down its views after it.)"""
+    if failures:
+        raise RuntimeError("%d failures:\n  %s" % (len(failures), "\n  ".join(failures)))
+    print("ok", flush=True)
+
+
+def grey(path):
+    """The screenshot at `path` as grey levels, row 0 at the image's top."""
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    width, height, _ = image.GetDimensions()
+    pixels = vtk_to_numpy(image.GetPointData().GetScalars()).astype(float)
+    return pixels[:, :3].mean(axis=1).reshape(height, width)[::-1]
+
+
+def screenshot(view, folder, name):
+    path = os.path.join(folder, name.replace(":", "-") + ".png")
+    SaveScreenshot(path, view, ImageResolution=SIZE)
+    return grey(path), path
+
+
+def scene(proxy, technique=None, ball_resolution=32, light_position=LIGHT, ball_center=BALL):
+    """A view of the ball over the plane, lit by a spot light only. Returns
+    the view, the light and the ball's source."""
+    view = CreateView(proxy)
+    view.ViewSize = SIZE
+    view.OrientationAxesVisibility = 0
+    view.UseLight = 0  # the light kit off: only the spot light below
+    if technique is not None:
+        view.ShadowTechnique = technique
+    plane = Plane(Origin=[-3, 0, -3], Point1=[3, 0, -3], Point2=[-3, 0, 3])
+    ball = Sphere(Center=ball_center, Radius=BALL_RADIUS, ThetaResolution=2 * ball_resolution,
+                  PhiResolution=ball_resolution)
+    Show(plane, view)
+    Show(ball, view)
+    light = AddLight(view=view)
+    light.Coords = "Scene"
+    light.Type = "Positional"
+    light.Position = light_position
+    light.FocalPoint = [0.0, 0.0, 0.0]
+    light.ConeAngle = 60
+    light.Radius = LIGHT_RADIUS if proxy != "RenderView" else 0.0
+    Render(view)  # the first render resets the camera: set it after
+    view.CameraPosition = [0, 4.5, 5.5]
+    view.CameraFocalPoint = [0, 0.3, 0]
+    view.CameraViewUp = [0, 1, 0]
+    view.CameraViewAngle = 30
+    Render(view)
+    return view, light, ball
+
+
+def pixel(view, point):
+    """Where the world `point` shows in the view's screenshots: (row, column),
+    row 0 at the top."""
+    camera = view.GetActiveCamera()
+    aspect = SIZE[0] / SIZE[1]
+    matrix = camera.GetCompositeProjectionTransformMatrix(aspect, -1, 1)
+    m = np.array([[matrix.GetElement(i, j) for j in range(4)] for i in range(4)])
+    x, y, _, w = m @ np.array(list(point) + [1.0])
+    column = (x / w * 0.5 + 0.5) * SIZE[0]
+    row = (1.0 - (y / w * 0.5 + 0.5)) * SIZE[1]
+    return int(row), int(column)
+
+
+def ground_shadow_radius():
+    """The hard shadow's radius on the ground (y = 0) of the ball under a
+    point light at LIGHT: the cone of rays tangent to the ball."""
+    d = LIGHT[1] - BALL[1]
+    half_angle = np.arcsin(BALL_RADIUS / d)
+    return LIGHT[1] * np.tan(half_angle)
+
+
+def process_ids_range(source):
+    """The range of ranks holding pieces of `source`."""
+    ids = ProcessIdScalars(Input=source)
+    ids.UpdatePipeline()
+    return ids.PointData["ProcessId"].GetRange()
