@@ -2,12 +2,15 @@
 light of radius 0.3), reading screenshots, projecting world points to
 pixels, and checks that count failures."""
 import os
+import sys
 
 import numpy as np
 from paraview.simple import (AddLight, CreateView, Plane, ProcessIdScalars, Render,
                              SaveScreenshot, Show, Sphere)
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOImage import vtkPNGReader
+
+# The module's own test helpers, for what does not depend on which VTK runs them.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Python"))
+from shadowtest import read_png  # noqa: E402
 
 SIZE = [240, 180]
 LIGHT = [0.0, 3.0, 0.0]
@@ -33,13 +36,7 @@ def finish():
 
 def grey(path):
     """The screenshot at `path` as grey levels, row 0 at the image's top."""
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    image = reader.GetOutput()
-    width, height, _ = image.GetDimensions()
-    pixels = vtk_to_numpy(image.GetPointData().GetScalars()).astype(float)
-    return pixels[:, :3].mean(axis=1).reshape(height, width)[::-1]
+    return read_png(path)[:, :, :3].astype(float).mean(axis=2)[::-1]
 
 
 def screenshot(view, folder, name):
