@@ -7,7 +7,8 @@
 # 9.2 in build-paraview/ and runs its C++ tests there, image tests included,
 # builds the plugin (ParaView/) in build-paraview/plugin, writes pvpython and
 # pvbatch wrappers that find it all, runs the plugin's test in pvpython and
-# its parallel test in pvbatch on one and two MPI ranks, and ends with three
+# its parallel tests in pvbatch on one and two MPI ranks and through a
+# pvserver on two ranks, and ends with three
 # lines: PLUGIN=, PVPYTHON= and PVBATCH=. Exits non-zero on
 # any failure. docs/paraview.md.
 #   bash scripts/paraview.sh [CTEST ARGUMENTS...]
@@ -72,7 +73,7 @@ plugin="$plugin_build/lib/SoftShadows/SoftShadows.so"
 
 # pvpython and pvbatch from the prefix, with its libraries and Python
 # modules (before the system's vtkmodules) and the module's libraries.
-for program in pvpython pvbatch; do
+for program in pvpython pvbatch pvserver; do
   cat >"$build/$program" <<WRAPPER
 #!/bin/sh
 # $program from Debian's ParaView unpacked in $prefix (scripts/paraview.sh).
@@ -93,6 +94,18 @@ xvfb "$build/pvbatch" --force-offscreen-rendering "$root/Testing/ParaView/test_p
   "$plugin" "$parallel"
 xvfb mpirun --allow-run-as-root --oversubscribe -np 2 "$build/pvbatch" --force-offscreen-rendering \
   "$root/Testing/ParaView/test_parallel.py" "$plugin" "$parallel"
+# Through a pvserver on two ranks, on a free port; the server exits when
+# the client leaves (timeout: in case the client never came).
+port=$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("localhost", 0)); print(s.getsockname()[1])')
+xvfb timeout 300 mpirun --allow-run-as-root --oversubscribe -np 2 "$build/pvserver" \
+  --force-offscreen-rendering "--server-port=$port" >"$parallel/pvserver.log" 2>&1 &
+server=$!
+if ! xvfb "$build/pvpython" "$root/Testing/ParaView/test_client_server.py" "$plugin" \
+  "$parallel" "$port"; then
+  kill "$server" 2>/dev/null || true
+  exit 1
+fi
+wait "$server" || { cat "$parallel/pvserver.log"; exit 1; }
 # The README's example, as a user runs it.
 xvfb "$build/pvpython" --force-offscreen-rendering "$root/Examples/Python/paraview_shadows.py" \
   "$plugin" "$build/paraview_shadows.png"

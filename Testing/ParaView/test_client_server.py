@@ -1,0 +1,57 @@
+"""The plugin's view through a pvserver on two MPI ranks (scripts/paraview.sh
+starts the server): the client-server path of the light Radius (the view's
+proxy on the client hands it to the view on each server rank) and the shadow
+maps combined across the server's ranks. The scene is test_parallel.py's;
+its one-rank images in FOLDER are the reference.
+
+    PVPYTHON test_client_server.py PLUGIN FOLDER PORT
+"""
+import os
+import sys
+import time
+
+import numpy as np
+from paraview.simple import Connect, GetSettingsProxy, LoadPlugin, Render
+
+import pvshadows
+from pvshadows import check
+
+plugin, folder, port = sys.argv[1], sys.argv[2], int(sys.argv[3])
+for attempt in range(60):  # the server takes a few seconds to listen
+    if Connect("localhost", port):
+        break
+    time.sleep(1)
+else:
+    raise RuntimeError("no pvserver on port %d" % port)
+# The client makes the view's proxy class, the server ranks the view.
+LoadPlugin(plugin, remote=False, ns=globals())
+LoadPlugin(plugin, remote=True, ns=globals())
+
+# Render on the server's ranks and composite there, however small the data
+# (else ParaView sends small geometry to the client and renders it there).
+GetSettingsProxy("RenderViewSettings").RemoteRenderThreshold = 0.0
+
+view, light, ball = pvshadows.scene("ShadowRenderView", ball_resolution=16,
+                                    light_position=[3.6, 2.4, 0.0], ball_center=[1.2, 1.2, 0.0])
+low, high = pvshadows.process_ids_range(ball)
+check((low, high) == (0, 1), "the ball's pieces lie on the server's ranks %d to %d" % (low, high))
+
+for name in ("hard", "contact"):
+    view.ShadowTechnique = name
+    Render(view)
+    shaded, _ = pvshadows.screenshot(view, folder, "%s-server" % name)
+    single = pvshadows.grey(os.path.join(folder, "%s-1ranks.png" % name))
+    off = np.abs(shaded - single)
+    check((off > 24).mean() < 0.006 and off.mean() < 0.5,
+          "%s: two server ranks as one pvbatch rank (mean difference %.2f levels, %.2f%% of "
+          "pixels off by more than 24)" % (name, off.mean(), 100 * (off > 24).mean()))
+
+# The radius reaches the server's ranks: contact's shadow hardens at 0.
+light.Radius = 0.0
+Render(view)
+hard_edged, _ = pvshadows.screenshot(view, folder, "contact-server-radius0")
+changed = int((np.abs(hard_edged - shaded) > 16).sum())
+check(changed > 500, "contact: Radius 0 on the client changes %d pixels by more than 16 levels "
+      "on the server's image" % changed)
+
+pvshadows.finish()
