@@ -93,10 +93,12 @@ int vtkShadowMapManager::Update(
   previous.swap(this->Lights);
 
   renderer->ComputeVisiblePropBounds(this->SceneBounds);
-  const bool finite = parallel && parallel->IsParallel()
-    ? parallel->CombineBounds(this->SceneBounds)
-    : std::all_of(
-        this->SceneBounds, this->SceneBounds + 6, [](double v) { return std::isfinite(v); });
+  bool finite = std::all_of(
+    this->SceneBounds, this->SceneBounds + 6, [](double v) { return std::isfinite(v); });
+  if (parallel && parallel->IsParallel())
+  {
+    finite = parallel->CombineBounds(this->SceneBounds, finite);
+  }
   if (finite && !vtkMath::AreBoundsInitialized(this->SceneBounds))
   {
     return 0; // nothing to shadow

@@ -1,15 +1,14 @@
 #include "vtkShadowParallelMaps.h"
 
 #include "vtkCommunicator.h"
+#include "vtkMath.h"
 #include "vtkMultiProcessController.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
-#include <algorithm>
 #include <cfloat>
-#include <cmath>
 
 //------------------------------------------------------------------------------
 vtkShadowParallelMaps::vtkShadowParallelMaps() = default;
@@ -34,32 +33,28 @@ bool vtkShadowParallelMaps::IsParallel() const
 }
 
 //------------------------------------------------------------------------------
-bool vtkShadowParallelMaps::CombineBounds(double bounds[6])
+bool vtkShadowParallelMaps::CombineBounds(double bounds[6], bool finite)
 {
   // One MAX reduction: minima negated, and a flag for non-finite bounds
   // (MPI leaves the reduction of NaNs undefined). A process showing nothing
   // takes no room.
-  const bool empty = bounds[0] > bounds[1] || bounds[2] > bounds[3] || bounds[4] > bounds[5];
-  const bool finite = std::all_of(bounds, bounds + 6, [](double v) { return std::isfinite(v); });
+  const bool none = !finite || !vtkMath::AreBoundsInitialized(bounds);
   double local[7];
   for (int axis = 0; axis < 3; ++axis)
   {
-    local[2 * axis] = empty || !finite ? -DBL_MAX : -bounds[2 * axis];
-    local[2 * axis + 1] = empty || !finite ? -DBL_MAX : bounds[2 * axis + 1];
+    local[2 * axis] = none ? -DBL_MAX : -bounds[2 * axis];
+    local[2 * axis + 1] = none ? -DBL_MAX : bounds[2 * axis + 1];
   }
   local[6] = finite ? 0.0 : 1.0;
   double global[7];
   this->Controller->AllReduce(local, global, 7, vtkCommunicator::MAX_OP);
   if (global[6] > 0.0)
   {
-    std::fill(bounds, bounds + 6, std::nan(""));
     return false;
   }
   if (global[0] == -DBL_MAX)
   {
-    // Nothing anywhere: VTK's uninitialized bounds.
-    const double none[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
-    std::copy(none, none + 6, bounds);
+    vtkMath::UninitializeBounds(bounds); // nothing anywhere
     return true;
   }
   for (int axis = 0; axis < 3; ++axis)

@@ -46,10 +46,11 @@ public:
   /**
    * Replace this process's scene `bounds` (VTK's order; uninitialized when
    * it shows nothing) by the bounds of every process's, so that every
-   * process fits the same light frusta. Returns false, on every process,
-   * when any process's bounds are not finite.
+   * process fits the same light frusta. `finite`: whether this process's
+   * bounds are. Returns false, on every process, when any process's bounds
+   * are not finite (`bounds` are then left as they were).
    */
-  bool CombineBounds(double bounds[6]);
+  bool CombineBounds(double bounds[6], bool finite);
 
   /**
    * The least of every process's `value`: e.g. the texture units left for
