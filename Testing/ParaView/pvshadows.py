@@ -39,10 +39,24 @@ def grey(path):
     return read_png(path)[:, :, :3].astype(float).mean(axis=2)[::-1]
 
 
+def image_path(folder, name):
+    """Where screenshot() puts the image called `name` (a technique's spec, maybe)."""
+    return os.path.join(folder, name.replace(":", "-") + ".png")
+
+
 def screenshot(view, folder, name):
-    path = os.path.join(folder, name.replace(":", "-") + ".png")
+    path = image_path(folder, name)
     SaveScreenshot(path, view, ImageResolution=SIZE)
     return grey(path), path
+
+
+def check_alike(image, reference, what, mean, share):
+    """`image` as `reference`: on average within `mean` levels, and less than
+    `share` of its pixels off by more than 24."""
+    off = np.abs(image - reference)
+    check(off.mean() < mean and (off > 24).mean() < share,
+          "%s (mean difference %.2f levels, %.2f%% of pixels off by more than 24)" % (
+              what, off.mean(), 100 * (off > 24).mean()))
 
 
 def scene(proxy, technique=None, ball_resolution=32, light_position=LIGHT, ball_center=BALL):
@@ -73,6 +87,14 @@ def scene(proxy, technique=None, ball_resolution=32, light_position=LIGHT, ball_
     view.CameraViewAngle = 30
     Render(view)
     return view, light, ball
+
+
+def side_lit_scene():
+    """The parallel tests' scene: a coarser ball off the centre, lit from
+    the side, so that the lower half of the ball casts the tip of its long
+    shadow (test_parallel.py)."""
+    return scene("ShadowRenderView", ball_resolution=16, light_position=[3.6, 2.4, 0.0],
+                 ball_center=[1.2, 1.2, 0.0])
 
 
 def pixel(view, point):
