@@ -3,6 +3,7 @@
 #include "MessageCapture.h"
 #include "ObjFiles.h"
 #include "PlyFiles.h"
+#include "VtpFiles.h"
 
 #include "vtkSoftShadowsMeshCheck.h"
 
@@ -13,7 +14,6 @@
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkSTLReader.h>
-#include <vtkXMLPolyDataReader.h>
 #include <vtksys/SystemTools.hxx>
 
 #include <cstdint>
@@ -108,7 +108,7 @@ vtkSmartPointer<vtkPolyData> ReadMeshFile(const std::filesystem::path& file, Mes
   switch (format)
   {
     case MeshFormat::VTP:
-      reader = MakeReader<vtkXMLPolyDataReader>(file);
+      reader = MakeVtpReader(file);
       break;
     case MeshFormat::OBJ:
       reader = MakeObjReader(file);
