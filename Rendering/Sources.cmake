@@ -7,6 +7,7 @@ set(softshadows_rendering_classes
   vtkOmnidirectionalShadowPass
   vtkRayCastLightVisibility
   vtkReferenceShadowPass
+  vtkShadowTechniqueCatalog
   vtkSilhouetteShadowPass
   vtkSmoothieShadowPass
   vtkSoftShadowPass)

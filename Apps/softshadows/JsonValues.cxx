@@ -325,6 +325,11 @@ std::string FormatNumber(double number)
   {
     return number > 0 ? "inf" : "-inf";
   }
+  // Whole numbers in full (a seed's 4294967295), the rest as streams print.
+  if (number == std::floor(number) && std::fabs(number) < 1e15)
+  {
+    return std::to_string(static_cast<long long>(number));
+  }
   std::ostringstream text;
   text << number;
   return text.str();

@@ -1,8 +1,10 @@
 """A Python user's path: import the passes from `vtksoftshadows`, set one on
-a renderer, and see a shadow where the ball hides the light."""
+a renderer, and see a shadow where the ball hides the light; and the
+techniques' catalog, which makes passes by name and sets their parameters."""
+import math
 import sys
 
-from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
+from vtkmodules.vtkCommonCore import vtkCommand, vtkUnsignedCharArray
 from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkPolyDataMapper,
                                          vtkRenderWindow, vtkRenderer)
@@ -10,7 +12,7 @@ import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (OpenGL factory)
 
 from vtksoftshadows import (vtkContactHardeningShadowPass, vtkFenceSource, vtkHardShadowPass,
                             vtkOmnidirectionalShadowPass, vtkReferenceShadowPass,
-                            vtkSoftShadowPass)
+                            vtkShadowTechniqueCatalog, vtkSoftShadowPass)
 
 import shadowtest as st
 
@@ -94,3 +96,47 @@ for variant in ("Gaussian", "MultiPass", "PCF", "Gaussian"):
 fence = vtkFenceSource()
 fence.Update()
 st.check(fence.GetOutput().GetNumberOfPolys() > 0, "vtkFenceSource makes triangles")
+
+# The catalog: every technique and variant makes its pass, each parameter's
+# default lies in its range and reads back what is set; a value out of range,
+# or a pass of another class, is refused with an error and changes nothing.
+catalog = vtkShadowTechniqueCatalog
+names = [catalog.GetTechniqueName(t) for t in range(catalog.GetNumberOfTechniques())]
+st.check(names == ["hard", "reference", "contact", "omni", "silhouette", "smoothies", "aliasfree"],
+         "the catalog's techniques: %s" % names)
+st.check(catalog.FindTechnique("nope") == -1 and catalog.GetTechniqueName(99) is None,
+         "unknown techniques are -1 and have no name")
+hard_pass = catalog.NewPass(catalog.FindTechnique("hard"), 0)
+hard_errors = []
+hard_pass.AddObserver(vtkCommand.ErrorEvent, lambda *args: hard_errors.append(args))
+for t, name in enumerate(names):
+    for v in range(max(1, catalog.GetNumberOfVariants(t))):
+        made = catalog.NewPass(t, v)
+        st.check(made is not None and made.IsA("vtkSoftShadowPass"),
+                 "%s variant %d: a pass (%s)" % (name, v, made.GetClassName()))
+    made = catalog.NewPass(t, -1)
+    errors = []
+    made.AddObserver(vtkCommand.ErrorEvent, lambda *args: errors.append(args))
+    for p in range(catalog.GetNumberOfParameters(t)):
+        key = "%s.%s" % (name, catalog.GetParameterKey(t, p))
+        size = catalog.GetParameterSize(t, p)
+        low, high = catalog.GetParameterMinimum(t, p), catalog.GetParameterMaximum(t, p)
+        default = [0.0, 0.0, 0.0]
+        st.check(catalog.GetParameter(made, t, p, default)
+                 and all(low <= x <= high for x in default[:size]),
+                 "%s: default %s in [%g, %g]" % (key, default[:size], low, high))
+        wanted = [low if math.isfinite(low) else -1.0] * 3
+        st.check(catalog.SetParameter(made, t, p, wanted) and catalog.GetParameter(made, t, p, default)
+                 and default[:size] == wanted[:size], "%s: set to its minimum, read back" % key)
+        del errors[:]
+        refused = [math.nan] * 3
+        if math.isfinite(high):
+            refused = [high + 1.0] * 3
+        st.check(not catalog.SetParameter(made, t, p, refused) and len(errors) == 1
+                 and catalog.GetParameter(made, t, p, default) and default[:size] == wanted[:size],
+                 "%s: %g refused with one error, the value kept" % (key, refused[0]))
+contact_index = catalog.FindTechnique("contact")
+dp = catalog.FindParameter(contact_index, "dp")
+st.check(not catalog.SetParameter(hard_pass, contact_index, dp, [1.0, 0.0, 0.0])
+         and len(hard_errors) == 1 and not catalog.GetParameter(hard_pass, contact_index, dp, [0.0] * 3),
+         "contact.dp is not a parameter of a hard pass: one error")

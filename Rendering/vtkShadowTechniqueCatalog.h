@@ -1,0 +1,102 @@
+/**
+ * @class   vtkShadowTechniqueCatalog
+ * @brief   The module's shadow techniques by name: their variants, their
+ *          parameters, and passes made and set from them.
+ *
+ * One table every front end reads: the `softshadows` program (technique
+ * specs `name[:variant]`, scene parameters in snake_case, the `techniques`
+ * listing), the ParaView view (its Shadow Technique choice, and one panel
+ * property per parameter) and Python. Techniques, variants and parameters
+ * are indices; the first variant of a technique is its default. Parameter
+ * values are doubles (0 or 1 for booleans), Vector3 parameters three of
+ * them; defaults are not in the table: they are read from a fresh pass
+ * (GetParameter()), so they are the classes' own.
+ */
+
+#ifndef vtkShadowTechniqueCatalog_h
+#define vtkShadowTechniqueCatalog_h
+
+#include "vtkObject.h"
+#include "vtkSoftShadowsRenderingModule.h" // for export macro
+
+class vtkSoftShadowPass;
+
+class VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowTechniqueCatalog : public vtkObject
+{
+public:
+  static vtkShadowTechniqueCatalog* New();
+  vtkTypeMacro(vtkShadowTechniqueCatalog, vtkObject);
+  /// Every technique, variant and parameter, with the defaults.
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// What a parameter holds.
+  enum ParameterTypes
+  {
+    Boolean = 0,
+    Integer,
+    Number,
+    Vector3 ///< three numbers
+  };
+
+  ///@{
+  /** Techniques: 0 to GetNumberOfTechniques() - 1; FindTechnique() is -1 for
+   * an unknown name. */
+  static int GetNumberOfTechniques();
+  static int FindTechnique(const char* name);
+  static const char* GetTechniqueName(int technique);
+  /// One sentence: the class and what it does.
+  static const char* GetTechniqueSummary(int technique);
+  ///@}
+
+  ///@{
+  /** A technique's variants, maybe none; the first is the default. */
+  static int GetNumberOfVariants(int technique);
+  static int FindVariant(int technique, const char* name);
+  static const char* GetVariantName(int technique, int variant);
+  static const char* GetVariantMeaning(int technique, int variant);
+  ///@}
+
+  ///@{
+  /** A technique's parameters, keyed in snake_case as scene files spell
+   * them. Minimum and maximum are what SetParameter() accepts, -inf and +inf
+   * when unbounded; a Vector3's bound each of its numbers. */
+  static int GetNumberOfParameters(int technique);
+  static int FindParameter(int technique, const char* key);
+  static const char* GetParameterKey(int technique, int parameter);
+  static const char* GetParameterMeaning(int technique, int parameter);
+  static int GetParameterType(int technique, int parameter);
+  /// 3 for a Vector3, else 1.
+  static int GetParameterSize(int technique, int parameter);
+  static double GetParameterMinimum(int technique, int parameter);
+  static double GetParameterMaximum(int technique, int parameter);
+  ///@}
+
+  /**
+   * A new pass of `technique` in `variant` (-1 or 0 for the default), every
+   * parameter at the class's default; the caller owns it. Null, with an
+   * error, for indices out of range.
+   */
+  static vtkSoftShadowPass* NewPass(int technique, int variant);
+
+  /**
+   * Sets a parameter of `pass`, a pass of `technique`, from
+   * GetParameterSize() values. False, with an error naming the technique
+   * and key, when the pass is of another class or a value is not allowed
+   * (out of range, NaN, not a whole number for an Integer).
+   */
+  static bool SetParameter(
+    vtkSoftShadowPass* pass, int technique, int parameter, const double values[3]);
+
+  /// The current value of a parameter of `pass`; false when it has none.
+  static bool GetParameter(vtkSoftShadowPass* pass, int technique, int parameter, double values[3]);
+
+protected:
+  vtkShadowTechniqueCatalog() = default;
+  ~vtkShadowTechniqueCatalog() override = default;
+
+private:
+  vtkShadowTechniqueCatalog(const vtkShadowTechniqueCatalog&) = delete;
+  void operator=(const vtkShadowTechniqueCatalog&) = delete;
+};
+
+#endif
