@@ -304,8 +304,26 @@ void PrintTechniques(std::ostream& os)
         "  \"shadows\": {\"technique\": \"hard\", \"map_size\": 2048, "
         "\"hard\": {\"pcf_radius\": 2}}\n"
         "and \"shadows.map_size\" (default 1024) sets every technique's shadow map size.\n";
+  // Columns as wide as their widest entry over every technique.
+  std::vector<std::vector<std::string>> defaults;
+  std::size_t keyWidth = 10;
+  std::size_t defaultWidth = 8;
   for (const Technique& technique : Techniques())
   {
+    TechniqueInstance fresh = technique.Create(
+      technique.Variants.empty() ? std::string() : technique.Variants.front().Name);
+    defaults.emplace_back();
+    for (const TechniqueParameter& parameter : technique.Parameters)
+    {
+      defaults.back().push_back(parameter.Current(fresh).dump());
+      keyWidth = std::max(keyWidth, parameter.Key.size() + 1);
+      defaultWidth = std::max(defaultWidth, defaults.back().back().size() + 1);
+    }
+  }
+  const int meaningColumn = static_cast<int>(2 + keyWidth + 9 + defaultWidth);
+  for (std::size_t t = 0; t < Techniques().size(); ++t)
+  {
+    const Technique& technique = Techniques()[t];
     os << "\n" << technique.Name << "\n";
     PrintWrapped(os, technique.Summary, 2);
     for (std::size_t i = 0; i < technique.Variants.size(); ++i)
@@ -319,17 +337,18 @@ void PrintTechniques(std::ostream& os)
       os << "  (no parameters)\n";
       continue;
     }
-    TechniqueInstance defaults = technique.Create(
-      technique.Variants.empty() ? std::string() : technique.Variants.front().Name);
-    os << "  " << std::left << std::setw(20) << "parameter" << std::setw(9) << "type"
-       << std::setw(9) << "default"
+    os << "  " << std::left << std::setw(static_cast<int>(keyWidth)) << "parameter" << std::setw(9)
+       << "type" << std::setw(static_cast<int>(defaultWidth)) << "default"
        << "meaning\n";
-    for (const TechniqueParameter& parameter : technique.Parameters)
+    for (std::size_t p = 0; p < technique.Parameters.size(); ++p)
     {
+      const TechniqueParameter& parameter = technique.Parameters[p];
       const std::string range = parameter.Allowed.Describe();
-      os << "  " << std::left << std::setw(20) << parameter.Key << std::setw(9)
-         << TypeName(parameter.Type) << std::setw(9) << parameter.Current(defaults).dump();
-      PrintWrapped(os, parameter.Meaning + (range.empty() ? "" : "; " + range), 40, 40);
+      os << "  " << std::left << std::setw(static_cast<int>(keyWidth)) << parameter.Key
+         << std::setw(9) << TypeName(parameter.Type) << std::setw(static_cast<int>(defaultWidth))
+         << defaults[t][p];
+      PrintWrapped(
+        os, parameter.Meaning + (range.empty() ? "" : "; " + range), meaningColumn, meaningColumn);
     }
   }
 }
