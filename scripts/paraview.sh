@@ -85,7 +85,8 @@ WRAPPER
 done
 
 xvfb() { xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" "$@"; }
-xvfb "$build/pvpython" --force-offscreen-rendering "$root/Testing/ParaView/test_plugin.py" "$plugin"
+xvfb "$build/pvpython" --force-offscreen-rendering "$root/Testing/ParaView/test_plugin.py" "$plugin" \
+  "$build/bin/softshadows"
 # Across MPI ranks: one rank's images, then two ranks' checked against them.
 parallel="$build/parallel-test"
 rm -rf "$parallel"

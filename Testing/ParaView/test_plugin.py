@@ -9,12 +9,19 @@ Shadow Technique. For each, the plugin's view
   which softens point lights only (checked with one),
 - draws the rest as ParaView draws it,
 - matches its baseline image (Testing/ParaView/Baseline).
+The panel has one property per parameter of `softshadows techniques`
+(SOFTSHADOWS, the program), named <Technique><Key>, at the listed default;
+a parameter set reaches the pass, stays when the technique comes back, and
+a value out of range is refused.
 
 The plugin's view is one view whose technique changes, as a user changes it.
 
-    PVPYTHON test_plugin.py PLUGIN [OUTPUT_FOLDER]
+    PVPYTHON test_plugin.py PLUGIN SOFTSHADOWS [OUTPUT_FOLDER]
 """
+import json
 import os
+import re
+import subprocess
 import sys
 import tempfile
 
@@ -25,8 +32,25 @@ import pvshadows
 from pvshadows import check
 
 # Hard whatever the radius; omni softens only point lights' shadows.
-HARD = ("hard", "silhouette:hard", "aliasfree:hard", "omni", "omni:pcf4")
+HARD = ("hard", "hard:sixpass", "silhouette:hard", "aliasfree:hard", "omni", "omni:pcf4",
+        "omni:hard")
 BASELINES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "Baseline")
+
+
+def listed_parameters(program):
+    """{property name: default} of every technique parameter the program lists."""
+    listing = subprocess.run([program, "techniques"], check=True, capture_output=True,
+                             text=True).stdout
+    parameters = {}
+    technique = None
+    for line in listing.splitlines():
+        if re.match(r"^[a-z]+$", line):
+            technique = line
+        found = re.match(r"^  ([a-z0-9_]+) +(boolean|integer|number|vector3) +(\S+)", line)
+        if found and technique != "vtk":
+            name = "".join(word.capitalize() for word in [technique] + found[1].split("_"))
+            parameters[name] = json.loads(found[3])
+    return parameters
 
 
 def penumbra_pixels(shaded, plain, umbra):
@@ -36,14 +60,37 @@ def penumbra_pixels(shaded, plain, umbra):
 
 
 LoadPlugin(sys.argv[1], remote=False, ns=globals())
-output = sys.argv[2] if len(sys.argv) > 2 else None
+program = sys.argv[2]
+output = sys.argv[3] if len(sys.argv) > 3 else None
 with tempfile.TemporaryDirectory() as folder:
     plain_view, _, _ = pvshadows.scene("RenderView")
     plain, _ = pvshadows.screenshot(plain_view, folder, "plain")
     view, light, _ = pvshadows.scene("ShadowRenderView")
     names = view.GetProperty("ShadowTechnique").Available
-    check(len(names) == 12 and names[0] == "hard" and "smoothies" in names,
-          "Shadow Technique offers every technique and variant: %s" % names)
+    specs = subprocess.run([program, "techniques"], check=True, capture_output=True,
+                           text=True).stdout
+    variants = {}
+    for line in specs.splitlines():
+        if re.match(r"^[a-z]+$", line) and line != "vtk":
+            variants[line] = []
+            technique = line
+        variant = re.match(r"^  variant (\S+)", line)
+        if variant:
+            variants[technique].append(variant[1])
+    listed = [spec for technique, its in variants.items()
+              for spec in [technique] + [technique + ":" + v for v in its[1:]]]
+    check(names == listed, "Shadow Technique offers every technique and variant: %s" % names)
+
+    # The panel: a property per parameter, at the class's default.
+    parameters = listed_parameters(program)
+    check(len(parameters) > 60, "the program lists %d parameters" % len(parameters))
+    for name, default in sorted(parameters.items()):
+        value = view.GetPropertyValue(name) if view.GetProperty(name) else None
+        if isinstance(default, list):
+            matches = value is not None and list(value) == default
+        else:
+            matches = value is not None and abs(float(value) - float(default)) < 1e-9
+        check(matches, "%s: a property at the default %s (%s)" % (name, default, value))
 
     r = pvshadows.ground_shadow_radius()
     centre = pvshadows.pixel(view, [0.0, 0.0, 0.0])
@@ -91,6 +138,30 @@ with tempfile.TemporaryDirectory() as folder:
             continue
         pvshadows.check_alike(shaded, pvshadows.grey(baseline_path), "%s: as its baseline" % name,
                               mean=1.0, share=0.002)
+
+    # A parameter reaches the pass, stays when its technique comes back, and
+    # a value out of range is refused (the pass keeps the last good one).
+    view.ShadowTechnique = "hard"
+    light.Radius = 0.0
+    Render(view)
+    one_tap, _ = pvshadows.screenshot(view, folder, "hard-pcf0")
+    view.HardPcfRadius = 4
+    view.ShadowTechnique = "contact"
+    Render(view)
+    view.ShadowTechnique = "hard"
+    Render(view)
+    filtered, _ = pvshadows.screenshot(view, folder, "hard-pcf4")
+    umbra_darkening = (plain - one_tap)[centre]
+    before = penumbra_pixels(one_tap, plain, umbra_darkening)
+    after = penumbra_pixels(filtered, plain, umbra_darkening)
+    check(after > 1.5 * before, "HardPcfRadius 4, kept across a change of technique: %d partly "
+          "shadowed pixels, %d with 0" % (after, before))
+    view.HardPcfRadius = 99
+    Render(view)
+    refused, _ = pvshadows.screenshot(view, folder, "hard-pcf99")
+    check(np.abs(refused - filtered).max() < 2, "HardPcfRadius 99 is refused: the image stays")
+    view.HardPcfRadius = 0
+    light.Radius = pvshadows.LIGHT_RADIUS
 
     # omni's own case: a point light (a cone of 90 degrees or more).
     view.ShadowTechnique = "omni"

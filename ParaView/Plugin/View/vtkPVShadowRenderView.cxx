@@ -1,21 +1,19 @@
 #include "vtkPVShadowRenderView.h"
 
-#include "vtkAliasFreeShadowPass.h"
-#include "vtkContactHardeningShadowPass.h"
-#include "vtkHardShadowPass.h"
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
-#include "vtkOmnidirectionalShadowPass.h"
 #include "vtkPVSynchronizedRenderer.h"
-#include "vtkReferenceShadowPass.h"
-#include "vtkSilhouetteShadowPass.h"
-#include "vtkSmoothieShadowPass.h"
+#include "vtkShadowTechniqueCatalog.h"
+#include "vtkSoftShadowPass.h"
+
+#include <algorithm>
 
 vtkStandardNewMacro(vtkPVShadowRenderView);
 
 //------------------------------------------------------------------------------
 vtkPVShadowRenderView::vtkPVShadowRenderView()
 {
+  this->Technique = vtkShadowTechniqueCatalog::FindTechnique(this->ShadowTechnique.c_str());
   this->MakePass();
 }
 
@@ -23,21 +21,81 @@ vtkPVShadowRenderView::vtkPVShadowRenderView()
 vtkPVShadowRenderView::~vtkPVShadowRenderView() = default;
 
 //------------------------------------------------------------------------------
-void vtkPVShadowRenderView::SetShadowTechnique(int technique)
+void vtkPVShadowRenderView::SetShadowTechnique(const char* spec)
 {
-  if (technique < 0 || technique >= NumberOfShadowTechniques)
+  using Catalog = vtkShadowTechniqueCatalog;
+  const std::string text = spec ? spec : "";
+  if (text == this->ShadowTechnique)
   {
-    vtkErrorMacro(<< "ShadowTechnique " << technique << " is not one of 0 to "
-                  << NumberOfShadowTechniques - 1 << "; the view keeps " << this->ShadowTechnique
-                  << ".");
     return;
   }
-  if (technique != this->ShadowTechnique)
+  const auto colon = text.find(':');
+  const int technique = Catalog::FindTechnique(text.substr(0, colon).c_str());
+  const int variant = colon == std::string::npos
+    ? -1
+    : Catalog::FindVariant(technique, text.substr(colon + 1).c_str());
+  if (technique < 0 || (colon != std::string::npos && variant < 0))
   {
-    this->ShadowTechnique = technique;
-    this->MakePass();
+    vtkErrorMacro(<< "ShadowTechnique '" << text
+                  << "' is no technique[:variant] of `softshadows techniques`; the view keeps '"
+                  << this->ShadowTechnique << "'.");
+    return;
+  }
+  this->ShadowTechnique = text;
+  this->Technique = technique;
+  this->Variant = variant;
+  this->MakePass();
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkPVShadowRenderView::SetShadowParameter(const char* name, double value)
+{
+  const double values[3] = { value, 0, 0 };
+  this->ApplyShadowParameter(name, values, 1);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVShadowRenderView::SetShadowParameter(const char* name, double x, double y, double z)
+{
+  const double values[3] = { x, y, z };
+  this->ApplyShadowParameter(name, values, 3);
+}
+
+//------------------------------------------------------------------------------
+bool vtkPVShadowRenderView::ApplyShadowParameter(const char* name, const double values[3], int size)
+{
+  using Catalog = vtkShadowTechniqueCatalog;
+  const std::string text = name ? name : "";
+  const auto dot = text.find('.');
+  const int technique = Catalog::FindTechnique(text.substr(0, dot).c_str());
+  const int parameter =
+    dot == std::string::npos ? -1 : Catalog::FindParameter(technique, text.substr(dot + 1).c_str());
+  if (parameter < 0 || Catalog::GetParameterSize(technique, parameter) != size)
+  {
+    vtkErrorMacro(<< "'" << text << "' with " << size << (size == 1 ? " value" : " values")
+                  << " is no technique.parameter of `softshadows techniques`.");
+    return false;
+  }
+  // Checked on a pass of that technique, the view's own when it is current.
+  vtkSmartPointer<vtkSoftShadowPass> pass = this->Pass;
+  if (technique != this->Technique)
+  {
+    pass = vtk::TakeSmartPointer(Catalog::NewPass(technique, -1));
+  }
+  double before[3] = { 0, 0, 0 };
+  Catalog::GetParameter(pass, technique, parameter, before);
+  if (!Catalog::SetParameter(pass, technique, parameter, values))
+  {
+    return false;
+  }
+  std::array<double, 3>& kept = this->Parameters[text];
+  std::copy(values, values + 3, kept.begin());
+  if (pass == this->Pass && !std::equal(values, values + size, before))
+  {
     this->Modified();
   }
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -77,49 +135,19 @@ void vtkPVShadowRenderView::AboutToRenderOnLocalProcess(bool interactive)
 //------------------------------------------------------------------------------
 void vtkPVShadowRenderView::MakePass()
 {
-  const int t = this->ShadowTechnique;
-  if (t == Hard)
-  {
-    this->Pass = vtkSmartPointer<vtkHardShadowPass>::New();
-  }
-  else if (t == Reference)
-  {
-    this->Pass = vtkSmartPointer<vtkReferenceShadowPass>::New();
-  }
-  else if (t == Contact || t == ContactGaussian || t == ContactMultiPass)
-  {
-    auto contact = vtkSmartPointer<vtkContactHardeningShadowPass>::New();
-    contact->SetVariant(t == Contact ? vtkContactHardeningShadowPass::PCF
-        : t == ContactGaussian       ? vtkContactHardeningShadowPass::Gaussian
-                                     : vtkContactHardeningShadowPass::MultiPass);
-    this->Pass = contact;
-  }
-  else if (t == Omni || t == OmniPCF4)
-  {
-    auto omni = vtkSmartPointer<vtkOmnidirectionalShadowPass>::New();
-    omni->SetFilter(
-      t == Omni ? vtkOmnidirectionalShadowPass::Poisson : vtkOmnidirectionalShadowPass::PCF4);
-    this->Pass = omni;
-  }
-  else if (t == Silhouette || t == SilhouetteHard)
-  {
-    auto silhouette = vtkSmartPointer<vtkSilhouetteShadowPass>::New();
-    silhouette->SetVariant(
-      t == Silhouette ? vtkSilhouetteShadowPass::Soft : vtkSilhouetteShadowPass::Hard);
-    this->Pass = silhouette;
-  }
-  else if (t == Smoothies)
-  {
-    this->Pass = vtkSmartPointer<vtkSmoothieShadowPass>::New();
-  }
-  else
-  {
-    auto aliasFree = vtkSmartPointer<vtkAliasFreeShadowPass>::New();
-    aliasFree->SetVariant(
-      t == AliasFree ? vtkAliasFreeShadowPass::Soft : vtkAliasFreeShadowPass::Hard);
-    this->Pass = aliasFree;
-  }
+  using Catalog = vtkShadowTechniqueCatalog;
+  this->Pass = vtk::TakeSmartPointer(Catalog::NewPass(this->Technique, this->Variant));
   this->Pass->SetMapSize(this->ShadowMapSize);
+  const std::string prefix = std::string(Catalog::GetTechniqueName(this->Technique)) + ".";
+  for (const auto& kept : this->Parameters)
+  {
+    if (kept.first.compare(0, prefix.size(), prefix) == 0)
+    {
+      Catalog::SetParameter(this->Pass, this->Technique,
+        Catalog::FindParameter(this->Technique, kept.first.substr(prefix.size()).c_str()),
+        kept.second.data());
+    }
+  }
   // The previous pass, and its textures, go when the renderers drop it.
   this->SynchronizedRenderers->SetRenderPass(this->Pass);
 }
@@ -132,4 +160,9 @@ void vtkPVShadowRenderView::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ShadowMapSize: " << this->ShadowMapSize << "\n";
   os << indent << "CombineShadowMaps: " << this->CombineShadowMaps << "\n";
   os << indent << "Pass: " << this->Pass->GetClassName() << "\n";
+  for (const auto& kept : this->Parameters)
+  {
+    os << indent << kept.first << ": " << kept.second[0] << " " << kept.second[1] << " "
+       << kept.second[2] << "\n";
+  }
 }

@@ -4,9 +4,11 @@
  *
  * The technique's pass is the render pass of the view's synchronized
  * renderers: ParaView puts its camera pass around it, and its compositing
- * after it. ShadowTechnique picks the technique and variant (the values of
- * ShadowTechniques, the names `softshadows techniques` lists); ShadowMapSize
- * is the pass's MapSize. The other parameters keep the classes' defaults.
+ * after it. ShadowTechnique picks the technique and variant by the names
+ * `softshadows techniques` lists (vtkShadowTechniqueCatalog); ShadowMapSize
+ * is the pass's MapSize; SetShadowParameter() sets any technique's parameter,
+ * kept for when that technique is chosen again, and the panel has one
+ * property per parameter, with the classes' defaults.
  *
  * Light sizes are ParaView's light `Radius` property: ParaView built without
  * ray tracing drops it in vtkPVLight::SetRadius(), so the view's proxy
@@ -26,6 +28,10 @@
 #include "vtkSmartPointer.h"          // for vtkSmartPointer
 #include "vtkSoftShadowsViewModule.h" // for export macro
 
+#include <array>  // for std::array
+#include <map>    // for std::map
+#include <string> // for std::string
+
 class vtkLight;
 class vtkSoftShadowPass;
 
@@ -36,30 +42,26 @@ public:
   vtkTypeMacro(vtkPVShadowRenderView, vtkPVRenderView);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// The choices of ShadowTechnique, in order.
-  enum ShadowTechniques
-  {
-    Hard = 0,
-    Reference,
-    Contact, ///< contact:pcf, the class's default
-    ContactGaussian,
-    ContactMultiPass,
-    Omni, ///< omni:poisson
-    OmniPCF4,
-    Silhouette, ///< silhouette:soft
-    SilhouetteHard,
-    Smoothies,
-    AliasFree, ///< aliasfree:soft
-    AliasFreeHard,
-    NumberOfShadowTechniques
-  };
+  ///@{
+  /**
+   * The technique and variant, `name[:variant]` (`contact`,
+   * `contact:multipass`). An unknown name is an error and the view keeps its
+   * technique. Default `contact` (its default variant, pcf).
+   */
+  void SetShadowTechnique(const char* spec);
+  const char* GetShadowTechnique() const { return this->ShadowTechnique.c_str(); }
+  ///@}
 
   ///@{
   /**
-   * The technique and variant, one of ShadowTechniques. Default Contact.
+   * A technique's parameter, `technique.key` as scene files spell it
+   * (`contact.pass_limit`, `aliasfree.light_scale`), with one value or
+   * three for vectors (booleans 0 or 1). Applied at once when that technique
+   * is the view's, and whenever it becomes so; unknown names and values its
+   * class refuses are errors and leave the parameter as it was.
    */
-  void SetShadowTechnique(int technique);
-  vtkGetMacro(ShadowTechnique, int);
+  void SetShadowParameter(const char* name, double value);
+  void SetShadowParameter(const char* name, double x, double y, double z);
   ///@}
 
   ///@{
@@ -99,11 +101,16 @@ private:
   void operator=(const vtkPVShadowRenderView&) = delete;
 
   void MakePass();
+  bool ApplyShadowParameter(const char* name, const double values[3], int size);
 
-  int ShadowTechnique = Contact;
+  std::string ShadowTechnique = "contact";
+  int Technique = 0; ///< of vtkShadowTechniqueCatalog
+  int Variant = -1;  ///< the default
   int ShadowMapSize = 1024;
   bool CombineShadowMaps = true;
   vtkSmartPointer<vtkSoftShadowPass> Pass;
+  /// What SetShadowParameter() was given, by `technique.key`.
+  std::map<std::string, std::array<double, 3>> Parameters;
 };
 
 #endif
