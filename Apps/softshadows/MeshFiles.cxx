@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <fstream>
 #include <iterator>
+#include <new>
 #include <stdexcept>
 
 namespace softshadows
@@ -124,7 +125,15 @@ vtkSmartPointer<vtkPolyData> ReadMeshFile(const std::filesystem::path& file, Mes
   std::string problem;
   {
     MessageCapture messages;
-    reader->Update();
+    try
+    {
+      reader->Update();
+    }
+    catch (const std::bad_alloc&)
+    {
+      // What the checks above cannot see (a VTP file's compression headers).
+      throw std::runtime_error("reading it takes more memory than this machine has");
+    }
     problem = messages.FirstMessage();
   }
   auto* mesh = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));

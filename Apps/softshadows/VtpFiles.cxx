@@ -19,7 +19,6 @@ namespace softshadows
 namespace
 {
 constexpr double MaximumExpansion = 8192;
-constexpr long long Most = std::numeric_limits<long long>::max();
 
 class CheckedPolyDataReader : public vtkXMLPolyDataReader
 {
@@ -35,16 +34,14 @@ protected:
   int RequestData(
     vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs) override
   {
-    this->FileBytes = 0;
+    this->Checked = false;
     std::error_code error;
     const auto bytes = std::filesystem::file_size(this->GetFileName(), error);
-    if (!error)
-    {
-      this->FileBytes = static_cast<double>(bytes);
-    }
     vtkXMLDataElement* root = this->XMLParser ? this->XMLParser->GetRootElement() : nullptr;
     if (root && !error)
     {
+      this->Checked = true;
+      this->FileBytes = static_cast<double>(bytes);
       const char* compressor = root->GetAttribute("compressor");
       this->Expansion = compressor && *compressor ? MaximumExpansion : 1;
       const std::string problem = this->FindClaimProblem(root);
@@ -66,13 +63,24 @@ protected:
     {
       return 0;
     }
+    vtkXMLDataElement* cells = element->GetParent();
     const char* name = element->GetAttribute("Name");
     auto* offsets = vtkDataArray::SafeDownCast(array);
-    if (name && std::strcmp(name, "offsets") == 0 && offsets && numValues > 0 &&
+    if (this->Checked && cells && IsCellArray(cells->GetName()) && name &&
+      std::strcmp(name, "offsets") == 0 && offsets && numValues > 0 &&
       arrayIndex + numValues <= offsets->GetNumberOfValues())
     {
       const double last = offsets->GetComponent(arrayIndex + numValues - 1, 0);
-      if (last > this->FileBytes * this->Expansion)
+      vtkXMLDataElement* connectivity = nullptr;
+      for (int i = 0; i < cells->GetNumberOfNestedElements(); ++i)
+      {
+        const char* other = cells->GetNestedElement(i)->GetAttribute("Name");
+        if (other && std::strcmp(other, "connectivity") == 0)
+        {
+          connectivity = cells->GetNestedElement(i);
+        }
+      }
+      if (connectivity && this->NeedBytes(connectivity, last) > this->FileBytes)
       {
         std::ostringstream problem;
         problem << "its last cell offset, " << std::fixed << std::setprecision(0) << last
@@ -85,32 +93,46 @@ protected:
   }
 
 private:
-  // The least number of file bytes the DataArray `array` needs for `tuples`
-  // tuples; 0 for what is not a DataArray the reader knows.
+  static bool IsCellArray(const char* name)
+  {
+    for (const char* kind : { "Verts", "Lines", "Strips", "Polys" })
+    {
+      if (std::strcmp(name, kind) == 0)
+      {
+        return true;
+      }
+    }
+    return false;
+  }
+
+  // The least number of file bytes the array element `array` (any element
+  // with a type, as the reader takes it) needs for `tuples` tuples.
   double NeedBytes(vtkXMLDataElement* array, double tuples) const
   {
     int dataType = 0;
-    if (std::strcmp(array->GetName(), "DataArray") != 0 ||
-      !array->GetWordTypeAttribute("type", dataType))
+    if (!array->GetWordTypeAttribute("type", dataType))
     {
       return 0;
     }
     int components = 1;
     array->GetScalarAttribute("NumberOfComponents", components);
     const double values = tuples * std::max(components, 1);
+    // Bits are packed in every format; the reader takes ASCII when no format is given.
+    const double bits = dataType == VTK_BIT ? 0.125 : 1;
     const char* format = array->GetAttribute("format");
-    if (format && std::strcmp(format, "ascii") == 0)
+    if (!format || std::strcmp(format, "ascii") == 0)
     {
-      return values;
+      return values * bits;
     }
     const double size =
-      dataType == VTK_BIT ? 0.125 : std::max(vtkAbstractArray::GetDataTypeSize(dataType), 1);
+      dataType == VTK_BIT ? bits : std::max(vtkAbstractArray::GetDataTypeSize(dataType), 1);
     return values * size / this->Expansion;
   }
 
-  // The same for the arrays nested in `element`, only those named `name`
-  // when one is given.
-  double NeedBytesOfAll(vtkXMLDataElement* element, double tuples, const char* name = nullptr) const
+  // The same for the arrays of `element`: all of them, its first only
+  // (Points), or those named `name` (a cell array's offsets).
+  double NeedBytesOfAll(
+    vtkXMLDataElement* element, double tuples, bool first = false, const char* name = nullptr) const
   {
     double need = 0;
     for (int i = 0; element && i < element->GetNumberOfNestedElements(); ++i)
@@ -120,11 +142,18 @@ private:
       if (!name || (arrayName && std::strcmp(arrayName, name) == 0))
       {
         need += this->NeedBytes(array, tuples);
+        if (first)
+        {
+          break;
+        }
       }
     }
     return need;
   }
 
+  // Each piece's arrays must be in the file; and the output's, which the
+  // reader sizes from the first piece's arrays for the points and cells of
+  // all pieces, could be only if every piece's were like the first's.
   std::string FindClaimProblem(vtkXMLDataElement* root) const
   {
     vtkXMLDataElement* polyData = root->FindNestedElementWithName("PolyData");
@@ -132,9 +161,10 @@ private:
     {
       return {};
     }
-    long long points = 0;
-    long long cells = 0;
+    double points = 0;
+    double cells = 0;
     double need = 0;
+    vtkXMLDataElement* first = nullptr;
     for (int i = 0; i < polyData->GetNumberOfNestedElements(); ++i)
     {
       vtkXMLDataElement* element = polyData->GetNestedElement(i);
@@ -145,7 +175,11 @@ private:
           vtkXMLDataElement* array = element->GetNestedElement(a);
           long long tuples = 0;
           array->GetScalarAttribute("NumberOfTuples", tuples);
-          need += this->NeedBytes(array, static_cast<double>(std::max(tuples, 0LL)));
+          if (tuples < 0)
+          {
+            return "its field data claims a negative number of tuples";
+          }
+          need += this->NeedBytes(array, static_cast<double>(tuples));
         }
         continue;
       }
@@ -153,34 +187,50 @@ private:
       {
         continue;
       }
+      first = first ? first : element;
       long long piecePoints = 0;
       element->GetScalarAttribute("NumberOfPoints", piecePoints);
-      piecePoints = std::max(piecePoints, 0LL);
-      points += std::min(piecePoints, Most - points);
-      need += this->NeedBytesOfAll(element->FindNestedElementWithName("Points"), piecePoints);
+      if (piecePoints < 0)
+      {
+        return "a piece claims a negative number of points";
+      }
+      points += static_cast<double>(piecePoints);
+      need += this->NeedBytesOfAll(element->FindNestedElementWithName("Points"), piecePoints, true);
       need += this->NeedBytesOfAll(element->FindNestedElementWithName("PointData"), piecePoints);
-      long long pieceCells = 0;
+      double pieceCells = 0;
       for (const char* kind : { "Verts", "Lines", "Strips", "Polys" })
       {
         long long count = 0;
         element->GetScalarAttribute((std::string("NumberOf") + kind).c_str(), count);
-        count = std::max(count, 0LL);
-        pieceCells += std::min(count, Most - pieceCells);
-        need += this->NeedBytesOfAll(element->FindNestedElementWithName(kind), count, "offsets");
+        if (count < 0)
+        {
+          return std::string("a piece claims a negative number of ") + kind;
+        }
+        pieceCells += static_cast<double>(count);
+        need += this->NeedBytesOfAll(
+          element->FindNestedElementWithName(kind), static_cast<double>(count), false, "offsets");
       }
-      cells += std::min(pieceCells, Most - cells);
+      cells += pieceCells;
       need += this->NeedBytesOfAll(element->FindNestedElementWithName("CellData"), pieceCells);
     }
-    if (need <= this->FileBytes)
+    double output = 0;
+    if (first)
+    {
+      output += this->NeedBytesOfAll(first->FindNestedElementWithName("Points"), points, true);
+      output += this->NeedBytesOfAll(first->FindNestedElementWithName("PointData"), points);
+      output += this->NeedBytesOfAll(first->FindNestedElementWithName("CellData"), cells);
+    }
+    if (std::max(need, output) <= this->FileBytes)
     {
       return {};
     }
     std::ostringstream problem;
-    problem << "it claims " << points << " points and " << cells
-            << " cells, whose arrays need more than its " << this->FileBytes << " bytes";
+    problem << std::fixed << std::setprecision(0) << "it claims " << points << " points and "
+            << cells << " cells, whose arrays need more than its " << this->FileBytes << " bytes";
     return problem.str();
   }
 
+  bool Checked = false;
   double FileBytes = 0;
   double Expansion = 1;
 };

@@ -56,6 +56,8 @@ expected = {
     "stl_huge_count.stl": "header gives 100000000 triangles, but the file holds 1",
     "vtp_claimed_points.vtp": "it claims 288230376151711744 points and 1 cells, whose arrays need more than its",
     "vtp_last_offset.vtp": "its last cell offset, 1000000000000, asks for more connectivity than its",
+    "vtp_first_piece_components.vtp": "it claims 3 points and 1 cells, whose arrays need more than its",
+    "vtp_negative_points.vtp": "a piece claims a negative number of points",
 }
 st.check(sorted(expected) == sorted(os.listdir(os.path.join(meshes, "bad"))),
          "every bad mesh file has its expectation")
