@@ -165,7 +165,7 @@ const std::vector<Technique>& Techniques()
         Bind<vtkReferenceShadowPass, int>("samples", Integer, Between(1, 4096),
           "light samples (shadow maps) per light, rounded down to a square",
           &vtkReferenceShadowPass::SetNumberOfSamples, &vtkReferenceShadowPass::GetNumberOfSamples),
-        Bind<vtkReferenceShadowPass, unsigned int>("seed", Integer, Between(0.0, 4294967295.0),
+        Bind<vtkReferenceShadowPass, unsigned int>("seed", Integer, Between(0.0, 2147483647.0),
           "seed of the light sample jitter", &vtkReferenceShadowPass::SetSeed,
           &vtkReferenceShadowPass::GetSeed),
       }),
@@ -601,6 +601,7 @@ bool vtkShadowTechniqueCatalog::SetParameter(
   const Parameter* p = ParameterAt(technique, parameter);
   if (!pass)
   {
+    vtkOutputWindowDisplayErrorText("vtkShadowTechniqueCatalog: SetParameter() without a pass");
     return false;
   }
   if (!p || !p->Accepts(pass))
@@ -609,22 +610,43 @@ bool vtkShadowTechniqueCatalog::SetParameter(
       pass, << "no parameter " << parameter << " of technique " << technique << " for this pass");
     return false;
   }
+  if (!IsAllowed(technique, parameter, values))
+  {
+    std::ostringstream shown;
+    for (int i = 0; i < GetParameterSize(technique, parameter); ++i)
+    {
+      shown << (i ? " " : "") << values[i];
+    }
+    vtkErrorWithObjectMacro(pass, << Techniques()[technique].Name << "." << p->Key << ": "
+                                  << shown.str() << " is not allowed ("
+                                  << (p->Type == Boolean      ? "0 or 1"
+                                         : p->Type == Integer ? "a whole number"
+                                                              : "a finite number")
+                                  << " from " << p->Allowed.Minimum << " to " << p->Allowed.Maximum
+                                  << ")");
+    return false;
+  }
+  p->Set(pass, values);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowTechniqueCatalog::IsAllowed(int technique, int parameter, const double values[3])
+{
+  const Parameter* p = ParameterAt(technique, parameter);
+  if (!p || !values)
+  {
+    return false;
+  }
   for (int i = 0; i < GetParameterSize(technique, parameter); ++i)
   {
     const double v = values[i];
-    if (std::isnan(v) || v < p->Allowed.Minimum || v > p->Allowed.Maximum ||
+    if (!std::isfinite(v) || v < p->Allowed.Minimum || v > p->Allowed.Maximum ||
       (p->Type != Number && p->Type != Vector3 && v != std::floor(v)))
     {
-      vtkErrorWithObjectMacro(
-        pass, << Techniques()[technique].Name << "." << p->Key << ": " << v << " is not allowed ("
-              << (p->Type == Boolean      ? "0 or 1"
-                     : p->Type == Integer ? "a whole number"
-                                          : "a number")
-              << " from " << p->Allowed.Minimum << " to " << p->Allowed.Maximum << ")");
       return false;
     }
   }
-  p->Set(pass, values);
   return true;
 }
 

@@ -18,6 +18,7 @@
 
 #include "vtkObject.h"
 #include "vtkSoftShadowsRenderingModule.h" // for export macro
+#include "vtkWrappingHints.h"              // for VTK_NEWINSTANCE
 
 class vtkSoftShadowPass;
 
@@ -76,16 +77,23 @@ public:
    * parameter at the class's default; the caller owns it. Null, with an
    * error, for indices out of range.
    */
-  static vtkSoftShadowPass* NewPass(int technique, int variant);
+  VTK_NEWINSTANCE static vtkSoftShadowPass* NewPass(int technique, int variant);
 
   /**
    * Sets a parameter of `pass`, a pass of `technique`, from
    * GetParameterSize() values. False, with an error naming the technique
-   * and key, when the pass is of another class or a value is not allowed
-   * (out of range, NaN, not a whole number for an Integer).
+   * and key, when the pass is null or of another class or a value is not
+   * allowed (IsAllowed()).
    */
   static bool SetParameter(
     vtkSoftShadowPass* pass, int technique, int parameter, const double values[3]);
+
+  /**
+   * Whether SetParameter() takes `values` for a parameter: each finite,
+   * within the bounds, a whole number for an Integer, 0 or 1 for a Boolean.
+   * Says nothing.
+   */
+  static bool IsAllowed(int technique, int parameter, const double values[3]);
 
   /// The current value of a parameter of `pass`; false when it has none.
   static bool GetParameter(vtkSoftShadowPass* pass, int technique, int parameter, double values[3]);

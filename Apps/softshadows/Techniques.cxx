@@ -320,7 +320,7 @@ void PrintTechniques(std::ostream& os)
       defaultWidth = std::max(defaultWidth, defaults.back().back().size() + 1);
     }
   }
-  const int meaningColumn = static_cast<int>(2 + keyWidth + 9 + defaultWidth);
+  const int meaningColumn = static_cast<int>(2 + keyWidth + 10 + defaultWidth);
   for (std::size_t t = 0; t < Techniques().size(); ++t)
   {
     const Technique& technique = Techniques()[t];
@@ -337,7 +337,7 @@ void PrintTechniques(std::ostream& os)
       os << "  (no parameters)\n";
       continue;
     }
-    os << "  " << std::left << std::setw(static_cast<int>(keyWidth)) << "parameter" << std::setw(9)
+    os << "  " << std::left << std::setw(static_cast<int>(keyWidth)) << "parameter" << std::setw(10)
        << "type" << std::setw(static_cast<int>(defaultWidth)) << "default"
        << "meaning\n";
     for (std::size_t p = 0; p < technique.Parameters.size(); ++p)
@@ -345,7 +345,7 @@ void PrintTechniques(std::ostream& os)
       const TechniqueParameter& parameter = technique.Parameters[p];
       const std::string range = parameter.Allowed.Describe();
       os << "  " << std::left << std::setw(static_cast<int>(keyWidth)) << parameter.Key
-         << std::setw(9) << TypeName(parameter.Type) << std::setw(static_cast<int>(defaultWidth))
+         << std::setw(10) << TypeName(parameter.Type) << std::setw(static_cast<int>(defaultWidth))
          << defaults[t][p];
       PrintWrapped(
         os, parameter.Meaning + (range.empty() ? "" : "; " + range), meaningColumn, meaningColumn);

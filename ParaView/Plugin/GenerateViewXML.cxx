@@ -150,13 +150,23 @@ std::string Property(int t, int p, vtkSoftShadowPass* defaults)
   {
     const std::string domain = type == Catalog::Integer ? "IntRangeDomain" : "DoubleRangeDomain";
     xml += "        <" + domain + " name=\"range\"";
+    // One bound per element: ParaView's range domains bound each element apart.
+    auto bound = [size](double value)
+    {
+      std::string values;
+      for (int i = 0; i < size; ++i)
+      {
+        values += (i ? " " : "") + Number(value);
+      }
+      return values;
+    };
     if (std::isfinite(minimum))
     {
-      xml += " min=\"" + Number(minimum) + "\"";
+      xml += " min=\"" + bound(minimum) + "\"";
     }
     if (std::isfinite(maximum))
     {
-      xml += " max=\"" + Number(maximum) + "\"";
+      xml += " max=\"" + bound(maximum) + "\"";
     }
     xml += "/>\n";
   }

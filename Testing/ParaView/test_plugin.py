@@ -46,7 +46,7 @@ def listed_parameters(program):
     for line in listing.splitlines():
         if re.match(r"^[a-z]+$", line):
             technique = line
-        found = re.match(r"^  ([a-z0-9_]+) +(boolean|integer|number|vector3) +(\S+)", line)
+        found = re.match(r"^  ([a-z0-9_]+) +(boolean|integer|number|\[x, y, z\]) +(\S+)", line)
         if found and technique != "vtk":
             name = "".join(word.capitalize() for word in [technique] + found[1].split("_"))
             parameters[name] = json.loads(found[3])
@@ -83,7 +83,8 @@ with tempfile.TemporaryDirectory() as folder:
 
     # The panel: a property per parameter, at the class's default.
     parameters = listed_parameters(program)
-    check(len(parameters) > 60, "the program lists %d parameters" % len(parameters))
+    check(len(parameters) > 60 and isinstance(parameters.get("AliasfreeLightScale"), list),
+          "the program lists %d parameters, vectors too" % len(parameters))
     for name, default in sorted(parameters.items()):
         value = view.GetPropertyValue(name) if view.GetProperty(name) else None
         if isinstance(default, list):

@@ -113,7 +113,7 @@ for t, name in enumerate(names):
     for v in range(max(1, catalog.GetNumberOfVariants(t))):
         made = catalog.NewPass(t, v)
         st.check(made is not None and made.IsA("vtkSoftShadowPass"),
-                 "%s variant %d: a pass (%s)" % (name, v, made.GetClassName()))
+                 "%s variant %d: a pass (%s)" % (name, v, made and made.GetClassName()))
     made = catalog.NewPass(t, -1)
     errors = []
     made.AddObserver(vtkCommand.ErrorEvent, lambda *args: errors.append(args))
@@ -140,3 +140,17 @@ dp = catalog.FindParameter(contact_index, "dp")
 st.check(not catalog.SetParameter(hard_pass, contact_index, dp, [1.0, 0.0, 0.0])
          and len(hard_errors) == 1 and not catalog.GetParameter(hard_pass, contact_index, dp, [0.0] * 3),
          "contact.dp is not a parameter of a hard pass: one error")
+
+# What is allowed: whole numbers for integers, 0 or 1 for booleans, finite.
+samples = catalog.FindParameter(catalog.FindTechnique("reference"), "samples")
+dilation = catalog.FindParameter(contact_index, "dilation")
+bias = catalog.FindParameter(contact_index, "slope_scaled_bias")
+reference_index = catalog.FindTechnique("reference")
+st.check(catalog.IsAllowed(reference_index, samples, [16.0, 0, 0])
+         and not catalog.IsAllowed(reference_index, samples, [16.5, 0, 0])
+         and catalog.IsAllowed(contact_index, dilation, [1.0, 0, 0])
+         and not catalog.IsAllowed(contact_index, dilation, [0.5, 0, 0])
+         and catalog.IsAllowed(contact_index, bias, [-3.0, 0, 0])
+         and not catalog.IsAllowed(contact_index, bias, [math.inf, 0, 0])
+         and not catalog.IsAllowed(contact_index, bias, [math.nan, 0, 0]),
+         "IsAllowed: 16.5 samples, a boolean 0.5 and an infinite or NaN bias are refused")

@@ -77,23 +77,28 @@ bool vtkPVShadowRenderView::ApplyShadowParameter(const char* name, const double 
                   << " is no technique.parameter of `softshadows techniques`.");
     return false;
   }
-  // Checked on a pass of that technique, the view's own when it is current.
-  vtkSmartPointer<vtkSoftShadowPass> pass = this->Pass;
-  if (technique != this->Technique)
+  if (!Catalog::IsAllowed(technique, parameter, values))
   {
-    pass = vtk::TakeSmartPointer(Catalog::NewPass(technique, -1));
-  }
-  double before[3] = { 0, 0, 0 };
-  Catalog::GetParameter(pass, technique, parameter, before);
-  if (!Catalog::SetParameter(pass, technique, parameter, values))
-  {
+    vtkErrorMacro(<< text << ": " << values[0] << (size == 3 ? " ..." : "")
+                  << " is not allowed (from " << Catalog::GetParameterMinimum(technique, parameter)
+                  << " to " << Catalog::GetParameterMaximum(technique, parameter)
+                  << (Catalog::GetParameterType(technique, parameter) == Catalog::Number ||
+                           Catalog::GetParameterType(technique, parameter) == Catalog::Vector3
+                         ? ""
+                         : ", whole")
+                  << "); it stays as it was.");
     return false;
   }
-  std::array<double, 3>& kept = this->Parameters[text];
-  std::copy(values, values + 3, kept.begin());
-  if (pass == this->Pass && !std::equal(values, values + size, before))
+  std::copy(values, values + 3, this->Parameters[text].begin());
+  if (technique == this->Technique)
   {
-    this->Modified();
+    double before[3] = { 0, 0, 0 };
+    Catalog::GetParameter(this->Pass, technique, parameter, before);
+    Catalog::SetParameter(this->Pass, technique, parameter, values);
+    if (!std::equal(values, values + size, before))
+    {
+      this->Modified();
+    }
   }
   return true;
 }
@@ -156,7 +161,8 @@ void vtkPVShadowRenderView::MakePass()
 void vtkPVShadowRenderView::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "ShadowTechnique: " << this->ShadowTechnique << "\n";
+  os << indent << "ShadowTechnique: " << this->ShadowTechnique << " (technique " << this->Technique
+     << ", variant " << this->Variant << ")\n";
   os << indent << "ShadowMapSize: " << this->ShadowMapSize << "\n";
   os << indent << "CombineShadowMaps: " << this->CombineShadowMaps << "\n";
   os << indent << "Pass: " << this->Pass->GetClassName() << "\n";
