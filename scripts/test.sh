@@ -8,6 +8,6 @@ source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 cd "$(softshadows_root)"
 
 # numpy only for the tests' numeric checks.
-softshadows_install_packages "${SOFTSHADOWS_PACKAGES[@]}" python3-numpy
+softshadows_install_packages "${SOFTSHADOWS_PACKAGES[@]}" python3-numpy assimp-testmodels
 softshadows_build
 softshadows_ctest build "$@"
