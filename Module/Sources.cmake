@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 # The Filters module's classes, shared by the standalone build (CMakeLists.txt
 # here) and the remote-module build (cmake/RemoteModule.cmake).
 set(softshadows_filters_classes

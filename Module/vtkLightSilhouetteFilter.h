@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkLightSilhouetteFilter
  * @brief   The silhouette edges of a surface as seen from a light, as lines.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkSoftShadowsEdgeTable.h
  * @brief  Private: every unique edge of a TriangleMesh with all of its faces.

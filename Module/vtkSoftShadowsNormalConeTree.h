@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkSoftShadowsNormalConeTree.h
  * @brief  Private: a hierarchy of normal cones over edges, for silhouette searches.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkSoftShadowsTriangleMesh.h
  * @brief  Private: the triangles of a vtkPolyData as the mesh-topology filters see them.

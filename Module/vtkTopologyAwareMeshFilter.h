@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkTopologyAwareMeshFilter
  * @brief   Build a topology aware mesh (TAM) for silhouette rendering on the GPU.

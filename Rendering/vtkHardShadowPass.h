@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkHardShadowPass
  * @brief   Plain shadow mapping: one depth map per light, slope-scaled bias,

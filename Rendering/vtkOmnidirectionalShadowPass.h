@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkOmnidirectionalShadowPass
  * @brief   Omnidirectional shadows for point lights (Gerasimov, GPU Gems

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkReferenceShadowPass
  * @brief   Ground-truth soft shadows: the average of many hard shadow maps

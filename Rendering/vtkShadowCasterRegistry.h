@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkShadowCasterRegistry
  * @brief   Every shadow caster of a frame: the visible props, and the

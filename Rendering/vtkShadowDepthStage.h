@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkShadowDepthStage
  * @brief   Depth only: the mappers skip all shading. Light depth maps and the

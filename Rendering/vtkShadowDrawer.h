@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkShadowDrawer
  * @brief   The one place the framework draws geometry: "draw these casters

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkShadowMatrices.h
  * @brief  VTK's row-major vtkMatrix4x4 to and from GLM's column-major

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkSilhouetteShadowPass
  * @brief   Silhouette-distance shadow maps (Valient & Bujnak, "GPU friendly,

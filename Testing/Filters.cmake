@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 # Tests of the mesh-topology filters (Module/): one C++ driver, no rendering,
 # and Python tests of the same filters through the vtksoftshadows package.
 # Included at the end of Testing/CMakeLists.txt.

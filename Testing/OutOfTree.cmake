@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 # The installed module as an outside project sees it: install this build
 # into a fresh prefix, build Examples/Cxx/OutOfTree (a technique written
 # against the installed framework headers) with find_package(SoftShadows),
@@ -16,6 +18,9 @@ function (run what)
   endif ()
 endfunction ()
 run("install" "${CMAKE_COMMAND}" --install "${BUILD}" --prefix "${WORK}/prefix")
+if (NOT EXISTS "${WORK}/prefix/share/doc/softshadows/LICENSE")
+  message(FATAL_ERROR "the install has no share/doc/softshadows/LICENSE")
+endif ()
 set(flag_options "")
 if (FLAGS)
   set(flag_options "-DCMAKE_CXX_FLAGS=${FLAGS}" "-DCMAKE_EXE_LINKER_FLAGS=${FLAGS}")

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 # Remote-module build: one module, VTK::RenderingSoftShadows, whose library
 # name gives it the Rendering folder's export header; the Filters folder's
 # header is a forwarding shim.

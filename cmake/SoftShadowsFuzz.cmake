@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 # SOFTSHADOWS_FUZZ: libFuzzer targets (Testing/Fuzz), and
 # softshadows_add_fuzzer() to declare one. Included by the root
 # CMakeLists.txt before any target is made; docs/testing.md.

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 # SOFTSHADOWS_SANITIZE: AddressSanitizer and UndefinedBehaviorSanitizer on
 # everything this project builds (module libraries, Python wrapping, the
 # programs, the test drivers). Debian's VTK stays uninstrumented. Included by

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 # shellcheck shell=bash
 # Shared by scripts/*.sh: the Debian 12 packages the project needs and a
 # function that installs the missing ones. Source it; it changes nothing by

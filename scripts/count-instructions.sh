@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 # Instructions a frame, counted by callgrind: the way to compare two builds
 # on a shared machine, where wall-clock ratios move by 10-20% between runs
 # and instruction counts repeat to 0.01%.

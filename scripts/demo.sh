@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 # The demo, unattended on a fresh Debian 12 (as root): installs what is
 # missing, builds, and renders Examples/Scenes/demo.json with every technique
 # into out/: one PNG per technique and out/gallery.png side by side, then

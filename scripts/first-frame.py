@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """What a first frame costs over the next (shader compiles, map allocation)
 against the number of lights: a ball over a plane at 64x48 with N lights
 around it, under plain VTK and the techniques named in PASSES (default

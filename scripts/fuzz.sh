@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 # Runs every fuzz target (Testing/Fuzz) for SECONDS each (default 60), starting
 # from its committed corpus, unattended on a fresh Debian 12 (as root): installs
 # clang, builds build-fuzz/ (SOFTSHADOWS_FUZZ: libFuzzer, ASan, UBSan) and

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Frame time of the plugin's view in pvbatch with the light moving every
 frame: a ball of 2 x RESOLUTION^2 triangles, split across the ranks, over a
 plane (docs/paraview.md). Run under mpirun -np 1 and -np 2 and compare; on

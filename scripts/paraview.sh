@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 # The ParaView plugin, unattended on a fresh Debian 12 (as root): installs
 # what is missing, unpacks Debian's paraview, paraview-dev and
 # python3-paraview into build-paraview/prefix (installing python3-paraview

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Every technique on every quality scene against the ray-cast truth
 (`softshadows quality`), with frame times (`softshadows bench`): prints the
 table and, unless --no-docs, rewrites docs/quality.md's table between its

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 # The whole test suite built with AddressSanitizer and UndefinedBehaviorSanitizer
 # (SOFTSHADOWS_SANITIZE) in build-sanitize/, unattended on a fresh Debian 12 (as
 # root): installs what is missing, builds, and runs every test under a virtual X

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 # The whole test suite, unattended on a fresh Debian 12 (as root): installs
 # what is missing, builds, and runs every test (C++ image tests, Python and
 # command-line tests) under a virtual X server. Exits non-zero on any failure.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // meshbench: times the mesh-topology filters on a generated mesh of about a
 // million triangles (no download): triangles per second for the topology aware
 // mesh and the edge adjacency, edges per second for light silhouettes (brute

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * The command line of `softshadows`: options of a subcommand and the values
  * they take. Mistakes throw InputError naming the option.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * Quality against physics: the ray-cast truth of a scene's light visibility
  * (vtkRayCastLightVisibility), its images, and how far a technique's

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * Turns a checked Scene into VTK objects: a renderer with the scene's lights,
  * actors and camera, and an off-screen window to draw it in.

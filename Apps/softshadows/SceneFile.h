@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * A scene file (JSON, docs/scene-format.md) read and checked into plain structs.
  *

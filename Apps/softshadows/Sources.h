@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * The built-in geometry a scene's actors can use (`"source": "sphere"`), each
  * with its parameters (`"params": {"radius": 0.5}`).

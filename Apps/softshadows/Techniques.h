@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * The shadow techniques the program knows: their names, variants and
  * parameters, and how to make their passes.

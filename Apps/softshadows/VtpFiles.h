@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * What VTK 9.1's vtkXMLPolyDataReader trusts in a VTP file, checked as it reads.
  *

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // softshadows: render, compare and time the soft-shadow techniques on scenes
 // described in JSON files: the README (commands) and docs/scene-format.md.
 

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """A ball and a box under a rectangular area light, 0.8 by 0.4: alias-free
 shadow maps (vtkAliasFreeShadowPass), shadows tested for exactly the points
 the camera sees and soft shadows from light samples over the rectangle, in

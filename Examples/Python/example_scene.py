@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """What the examples share: a floor, actors, a spot light with a radius, a
 camera, and drawing the scene through a shadow pass into a PNG.
 

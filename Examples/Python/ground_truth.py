@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """How close a technique is to physics: a ball over a floor under a spot
 light of radius 0.3, the light's visibility drawn by vtkReferenceShadowPass
 (the average of 256 shadow maps from points over the light) and by

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """ParaView with soft shadows: an isosurface of ParaView's Wavelet source
 over a floor, in the plugin's "Render View (Soft Shadows)", lit by a spot
 light whose Radius (ParaView's own light property) softens the shadows.

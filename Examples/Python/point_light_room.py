@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """A point light (cone of 180 degrees) of radius 0.15 in a corner of a room
 with a column and a ball: omnidirectional cube-map shadows, softened from
 the light's radius (vtkOmnidirectionalShadowPass, its Poisson filter).

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Your own mesh with soft shadows: a pipeline from a VTK reader (OBJ, PLY,
 STL or VTP by the file's extension) through vtkPolyDataNormals, the model
 scaled to stand 2 units tall on a floor under a spot light of radius 0.3,

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """A ball above a floor, lit by a spot light of radius 0.3, with soft
 contact-hardening shadows: the smallest use of the module, one pass set on
 a renderer.

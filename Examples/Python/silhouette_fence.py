@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """A fence over a floor under a spot light of radius 0.3: silhouette-distance
 shadow maps (vtkSilhouetteShadowPass, soft variant), which anti-alias the
 thin slats' shadow edges and widen their penumbrae with the distance to the

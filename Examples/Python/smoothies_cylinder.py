@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """A cylinder floating over a floor under a spot light of radius 0.5:
 smoothies (vtkSmoothieShadowPass), soft edges drawn from geometry extruded
 along the cylinder's silhouette as the light sees it, found anew as the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Writes the view's server-manager XML from a template and the module's
 // technique catalog, so that the panel offers what the classes offer:
 //   GenerateViewXML TEMPLATE OUTPUT

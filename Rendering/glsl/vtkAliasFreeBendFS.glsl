@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Bent normals for receivers' fragments (Sintorn et al., section 6): a
 // light's diffuse cosine l_f (VTK's `df`, from the interpolated normal)
 // becomes alpha l_f + (1 - alpha) l_bend, alpha = min(1, max(c l_bend, 0)),

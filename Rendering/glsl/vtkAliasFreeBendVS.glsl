@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Bent normals for receivers' vertices (Sintorn et al., section 6): per
 // shadowed light, l_bend = min over the faces around this vertex of
 // dot(l, n_F), l the unit vector towards the light's centre. Also the

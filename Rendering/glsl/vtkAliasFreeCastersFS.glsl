@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests a caster triangle against the view samples listed in this texel
 // (Sintorn et al., section 3.3; empty lists end at once):
 // - hard: a sample is hidden when it lies inside the planes through the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Conservative rasterization of a caster triangle into the alias-free map
 // (Sintorn et al., section 3.2, after Hasselgren et al.): every texel the
 // triangle touches runs the fragment shader, which tests the texel's view

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Caster triangles for the alias-free map: world positions for the
 // geometry shader (vtkAliasFreeCastersGS.glsl), which does the projecting;
 // with ALIASFREE_EDGES, edges and their faces' normals.

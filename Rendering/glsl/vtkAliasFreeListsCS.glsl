@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The view samples' lists in the light's map (Sintorn et al., section 3.1),
 // one stage per define:
 // - ALIASFREE_BOUNDS: the bounds of the samples in the light's clip space

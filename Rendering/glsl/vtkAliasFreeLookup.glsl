@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The lookup table of sample-based visibility (Sintorn et al., section 4.2):
 // for a plane, the bitmask of the light samples on its positive side. A
 // plane is its unit normal n in the light's frame (its direction) and its

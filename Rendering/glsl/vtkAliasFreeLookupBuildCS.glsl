@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Builds the lookup table (vtkAliasFreeLookup.glsl): one invocation per
 // 32-bit word of a cell's mask.
 // Uses: vtkAliasFreeLookup.glsl (prepended by the pass, with

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Shared by the contact-hardening passes (after vtkShadowScreenCommonFS).
 // Every map holds the framework's visibility layout
 // (vtkShadowScreenBuffers::GetVisibility()), which vtkShadowPackTexel()

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Pass 2 (section 3.2): the distance map, run on every fragment of the
 // camera depth pass (vtkSoftShadowPass::RenderCameraDepth()) for each of its
 // CONTACT_LIGHTS lights: S from the hard shadow test, D from the occluder

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Pass 4, single Gaussian variant: a separable Gaussian blur of the
 // visibility over D pixels on the receiver (clamped to the maximum; sigma =
 // size / 3), run once along x, then along y writing pass 5's visibility.

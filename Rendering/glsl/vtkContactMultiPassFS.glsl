@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Pass 4, multi-pass variant: one Poisson-disk Gaussian blur of the
 // visibility over a kernel of `kernelSize` pixels (sigma = size / 3, weights
 // normalised), for pixels whose D is still positive, the kernel shrunk where

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Pass 4, PCF variant: the mean visibility over a disc of D pixels across
 // on the receiver (clamped to the maximum; vtkContactSurfaceDistance2): the
 // light's own shape, whose shadow of an edge the penumbra is. Then pass 5's

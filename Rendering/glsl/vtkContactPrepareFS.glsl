@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Between passes 2 and 4: the umbra early-out (section 5: D = 0 where the
 // whole neighbourhood is shadowed) and the optional dilation of D (pass 3).
 // Reads the distance map, the other ping-pong buffer, where pixels left

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Tile classification, step 2: spread step 1's tiles (contactMap here) over
 // the reach of the prepare pass's neighbourhoods. A pixel of tile t reaches
 // r pixels no further than tiles t +- ceil(r / tile size), so

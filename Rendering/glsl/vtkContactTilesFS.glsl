@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Tile classification for the prepare pass, step 1: per tile of
 // contactTileSize^2 pixels of the distance map (contactMap, read through a
 // bilinear sampler), the least and the greatest S (1 - r; background counts

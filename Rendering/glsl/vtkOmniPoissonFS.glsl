@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Technique `omni`, Poisson filter: soft shadows of a spherical light of
 // radius R from a cube map of squared distances. A blocker search over the
 // light's extent gives the mean blocker distance b; the penumbra at a

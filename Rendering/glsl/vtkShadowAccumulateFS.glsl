@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Reference technique: adds one light sample's binary visibility, weighted
 // 1/N, to the light's visibility texture (additive blending). The sample is
 // a 2D depth map, or, when ACCUMULATE_CUBE is defined, a point light's cube

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Point lights' cube maps (vtkShadowDistanceStage): the squared distance of
 // the fragment to the face's eye, the light, from its window position; or
 // (vtkShadowFaceLinear) its linear depth along any frustum's axis.

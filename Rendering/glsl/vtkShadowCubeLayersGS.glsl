@@ -1,4 +1,6 @@
 //VTK::System::Dec
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 
 // Point-light cube maps in one pass: every triangle goes to the six faces
 // (gl_Layer) of a layered cube-map framebuffer. The vertex shader drew for

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Point lights (Gerasimov, GPU Gems ch. 12): visibility from a cube map of
 // squared distances to the light, looked up with the light-to-fragment
 // direction. Shared by receivers, screen-space passes and techniques.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Receiver-side offset, shared by mapper shaders and screen-space passes:
 // the looked-up point moves towards the light along its own ray by `texels`
 // shadow-map texels over cos(theta) (theta between the surface's geometric

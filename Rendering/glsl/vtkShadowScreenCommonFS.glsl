@@ -1,4 +1,6 @@
 //VTK::System::Dec
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 //VTK::Output::Dec
 
 // Shared by every screen-space shadow pass: the camera depth pre-pass and

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The surface a mapper's fragment lies on, for the camera pass and the
 // receivers (vtkSoftShadowPass): its world position and geometric normal,
 // from the mapper's view-space position (vertexVC: imposters ray-cast it in

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Light-space depths shared by the silhouette pass and its receivers
 // (vtkSilhouetteEdgesVS.glsl, vtkSilhouetteLookupFS.glsl). range: near, far,
 // 1 for a parallel (directional) map, 0 for a perspective one.

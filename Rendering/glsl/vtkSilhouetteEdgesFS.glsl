@@ -1,4 +1,6 @@
 //VTK::System::Dec
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 //VTK::Output::Dec
 // Pass 2's fragments (Valient & Bujnak, section 2.1.1): keep only the thick
 // silhouette, and write the signed distance to its nearest point (texels,

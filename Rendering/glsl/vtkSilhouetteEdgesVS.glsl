@@ -1,4 +1,6 @@
 //VTK::System::Dec
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Pass 2 of silhouette-distance shadow maps (Valient & Bujnak, section
 // 2.1.1), over a topology aware mesh (vtkTopologyAwareMeshFilter): each
 // vertex finds its face's silhouette edges from the light, collapses faces

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Receivers of silhouette-distance shadow maps (Valient & Bujnak, section
 // 2.2): a light's depth map, its silhouette map (signed distance to the
 // nearest silhouette in texels, positive on the occluder's side, and that

@@ -1,4 +1,6 @@
 //VTK::System::Dec
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 //VTK::Output::Dec
 // The smoothie buffer (Volokh, sections 3.3 to 3.5): each smoothie fragment
 // writes its depth b and its corrected alpha, alpha' = alpha / (1 - b/r)

@@ -1,4 +1,6 @@
 //VTK::System::Dec
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Smoothie geometry (Volokh, section 3.1) from one silhouette edge a -> b and
 // the silhouette edge b -> c that follows it, as lines with adjacency
 // (a, b, c, unused):

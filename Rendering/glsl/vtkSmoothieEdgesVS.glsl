@@ -1,4 +1,6 @@
 //VTK::System::Dec
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Smoothies (Chan & Durand 2003, as Volokh's report implements them): each
 // silhouette vertex goes on, in model space, to the geometry shader that
 // builds the smoothie edges and corners in the light's screen space.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Smoothie receivers (Volokh, section 4): at each of the four texels nearest
 // to the receiver's point in the light's maps, with its linear depth d, the
 // shadow map's d_s and the smoothie buffer's depth d_m and alpha',

@@ -1,4 +1,6 @@
 //VTK::System::Dec
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Smoothie edges and corners built on the CPU for one frustum (the pass's
 // BuildOnGPU off): each vertex is its silhouette vertex, in model space,
 // moved in screen space by its offset at the same depth, as

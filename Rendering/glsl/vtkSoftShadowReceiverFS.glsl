@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Shadow term of the receivers' fragment shaders, shared by every technique.
 // Inserted by vtkSoftShadowPass after VTK_SHADOW_LIGHTS (number of shadowed
 // lights), VTK_SHADOW_MAPS and VTK_SHADOW_CUBES (how many of them have a 2D

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Small scene shared by the C++ tests: a ball above a ground plane, a box
 // beside it, lit by a spot light from above at an angle. Windows stay small:
 // the tests run on a software rasterizer.

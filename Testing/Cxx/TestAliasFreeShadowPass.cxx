@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Regression images of the `aliasfree` technique: run as
 //   TestAliasFreeShadowPass <ball|fence> <soft|hard> -V baseline ...
 // The ball and the fence over a plane under spot lights of radius 0.4 and

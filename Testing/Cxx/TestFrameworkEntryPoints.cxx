@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The framework's entry points for techniques that draw their own geometry,
 // each used by a test-only technique and checked by number:
 // - technique-owned geometry (a 9-component attribute split into vec3s)

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Regression image of the `hard` technique on the ball-and-box scene, in a
 // non-square window.
 #include "vtkHardShadowPass.h"

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // A point light inside a closed room, one box towards each of the six walls
 // (Gerasimov, GPU Gems ch. 12): the regression image shows a shadow on every
 // wall the camera sees, drawn through a single-pass (layered) cube map; the

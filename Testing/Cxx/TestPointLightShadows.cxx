@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Two point lights and a spot light together (Gerasimov, GPU Gems ch. 12):
 // a post on the ground casts one shadow from each, each light's shadow-only
 // output is dark exactly behind the post from that light and lit where only

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Regression image of the `reference` technique: the same scene as
 // TestHardShadowPass with a light of radius 0.4, so penumbrae appear.
 #include "vtkNew.h"

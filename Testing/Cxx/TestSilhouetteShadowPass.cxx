@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Regression images of the `silhouette` technique: run as
 //   TestSilhouetteShadowPass <ball|fence|room> <soft|hard> -V baseline ...
 // Penumbrae come from the light's radius (the default), so no tuning per scene.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Regression images of the `smoothies` technique: run as
 //   TestSmoothieShadowPass <cylinder|fence|room> -V baseline ...
 // A cylinder and the fence over a plane (the report's figures 6 and 7) under

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // What VTK 9.1's vtkShadowMapPass gets wrong, in one picture: a spot light
 // and a directional light shadowing together, a PBR actor with positional
 // light, a translucent actor still drawn, in a non-square window. Then a

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Fuzz target: any bytes as a mesh, through what a mesh meets on its way to
 // the shadow techniques. The first byte picks the way in:
 //   0-3  a VTP, OBJ, PLY or STL file (the rest of the bytes), read by the

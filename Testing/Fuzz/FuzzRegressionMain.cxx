@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Runs a fuzz target's LLVMFuzzerTestOneInput once on each file given, or on
 // each file of each folder given, without libFuzzer: the regression test of
 // every build (cmake/SoftShadowsFuzz.cmake). A crash or a sanitizer report

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Fuzz target: any bytes as the text of a scene file, through the parser and
 // checks of Apps/softshadows/SceneFile.cxx. A malformed scene must end in an
 // InputError (the program's exit code 2 with one message); anything else

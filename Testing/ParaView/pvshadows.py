@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """What the ParaView tests share: the scene (a ball over a plane under a spot
 light of radius 0.3), reading screenshots, projecting world points to
 pixels, and checks that count failures."""

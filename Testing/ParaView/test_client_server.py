@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """The plugin's view through a pvserver on two MPI ranks (scripts/paraview.sh
 starts the server): the client-server path of the light Radius (the view's
 proxy on the client hands it to the view on each server rank) and the shadow

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """The plugin's view across MPI ranks, in pvbatch (scripts/paraview.sh runs
 it under mpirun -np 1 and -np 2). The ball is split into pieces across the
 ranks (ParaView's sphere source gives each rank a band of latitudes: with

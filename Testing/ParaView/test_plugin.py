@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """The ParaView plugin in pvpython (scripts/paraview.sh runs it): a ball over
 a plane under a spot light of radius 0.3 (ParaView's own light Radius),
 drawn by ParaView's render view and by the plugin's under every choice of

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Helpers for the numeric shadow tests: scenes whose shadows geometry can
 predict, the `softshadows` program, and camera rays matching vtkCamera's.
 

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """The `aliasfree` technique (Sintorn, Eisemann & Assarsson), measured
 against the ray-cast truth: hard shadows that match an exact hard shadow at
 any map size, with no bias at all; soft shadows near the truth of a

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Bad input reaching the module, from files and from a user's pipeline:
 each mesh file that crashed `softshadows render` (or VTK's own readers) now
 gives one printable line naming the field and what is wrong, exit code 2;

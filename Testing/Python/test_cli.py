@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """The `softshadows` program: listing, rendering, sizes, and one clear
 message naming the field for every malformed scene."""
 import json

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Every kind of actor VTK draws looks as VTK draws it under every technique,
 plus its shadow: the compatibility matrix.
 

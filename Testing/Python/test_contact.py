@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """The `contact` technique (Cherry & Kooima): contact-hardening penumbrae that
 widen with the occluder's height, and, with kernels sized from the light's
 radius, closer to the ray-cast truth than hard shadows (on other scenes:

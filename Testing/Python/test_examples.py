@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """The Python examples (Examples/Python) run as the README writes them, with
 this build's package, and each shows what it says: its shadowed image
 darkens part of the scene against the same scene drawn without the pass

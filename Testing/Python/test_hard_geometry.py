@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """`hard` puts the ball's shadow exactly where geometry says, on a
 non-square window: every ground pixel more than two pixels from the
 predicted shadow edge is lit (1) or in umbra (0) as predicted."""

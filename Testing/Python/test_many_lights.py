@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """More lights than a technique's receivers have texture units for: 40
 lights (spot and point) over the ball. Every technique shadows as many as
 fit, the brightest and then the nearest the focal point, draws the rest lit

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """The mesh-topology filters from Python (`vtksoftshadows`), checked with numpy:
 the documented output layouts on a sphere, agreement with vtkFeatureEdges,
 brute force against the normal-cone tree, and errors without crashes."""

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """The `omni` technique: point lights' cube maps (Gerasimov, GPU Gems ch. 12)
 softened by a Poisson-disk filter sized from the light's radius. Its
 penumbra widens with the occluder's height and it is closer to the ray-cast

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Point lights (Gerasimov, GPU Gems ch. 12): a point light inside a closed
 room with an occluder towards each wall. Two views between them show all six
 walls; on each, the shadow-only output matches ray-cast geometry away from

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """A Python user's path: import the passes from `vtksoftshadows`, set one on
 a renderer, and see a shadow where the ball hides the light; and the
 techniques' catalog, which makes passes by name and sets their parameters."""

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Quality against physics on scenes unlike the ball (Examples/Scenes/quality,
 480x360): every `contact` variant's RMSE against the ray-cast truth is at
 most 0.7 times `hard`'s, its umbrae nearly as dark as the truth's and its

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """The `reference` technique: with radius 0 it is `hard` without filtering,
 and its penumbra widens as the occluder rises, as similar triangles say:
 w = (d_receiver - d_blocker) * light_diameter / d_blocker."""

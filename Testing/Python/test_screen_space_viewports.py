@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Screen-space techniques in a renderer that does not start at the window's
 corner: the same scene drawn in a whole window and in the right half of one
 twice as wide (an odd size, so reduced buffers round up) must give the same

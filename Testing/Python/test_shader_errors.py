@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """A receiver's shader that does not compile (here: an actor's own shader
 replacement that clashes with the shadow term) is reported in one error
 naming the technique and the first line of OpenGL's log, not VTK's numbered

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """The `silhouette` technique (Valient & Bujnak): anti-aliased hard shadows
 where geometry puts them, closer to an exact hard shadow than `hard` at the
 same map size; soft penumbrae from the light's radius that widen with the

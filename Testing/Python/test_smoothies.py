@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """The `smoothies` technique (Chan & Durand, as Volokh's report implements
 them): the umbra where the hard shadow puts it and a soft edge only outside
 it, for spot, point and directional lights; penumbrae that widen as the

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+# SPDX-License-Identifier: BSD-3-Clause
 """The ray-cast ground truth (`softshadows truth`, vtkRayCastLightVisibility)
 against closed forms: a ball over the ground under spot, point and
 directional lights of several sizes, where the visible share of the light is

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // A ball over a floor under a spot light, drawn with vtkShadowTexelGridPass,
 // a technique built outside the module against its installed headers.
 //

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtkSMShadowRenderViewProxy.h"
 
 #include "vtkClientServerStream.h"

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class vtkSMShadowRenderViewProxy
  * @brief The proxy of vtkPVShadowRenderView: ParaView's light Radius made the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Helpers shared by the mesh-topology filter tests: small meshes checked by
 // hand, generated larger ones, a log of a filter's errors and warnings, and a
 // check macro that records failures and lets the test go on.

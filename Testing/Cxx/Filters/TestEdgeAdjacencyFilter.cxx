@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkEdgeAdjacencyFilter: hand-checked small meshes (tetrahedron, open square,
 // fin, Moebius strip), every output edge against an independent edge map on
 // generated meshes, and boundary / non-manifold counts against vtkFeatureEdges,

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLightSilhouetteFilter: silhouettes of the hand-checked meshes (edges and
 // their orientation), lights given by vtkLight, every edge of larger meshes
 // against a geometric test (all faces on one side of the plane through the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The three mesh-topology filters on bad or unusual input: empty meshes, NaN
 // and infinite points, point ids out of range, broken cell arrays and short
 // attribute arrays, degenerate and zero-area triangles, duplicate points,

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkTopologyAwareMeshFilter: the TAM of the hand-checked meshes (tetrahedron,
 // open square, fin, Moebius strip) vertex by vertex against neighbours found
 // independently, the per-face and half-precision layouts, the byte counts, and
