@@ -3,6 +3,7 @@
 #include "SceneBuilder.h"
 
 #include "MeshFiles.h"
+#include "ModelFiles.h"
 #include "Sources.h"
 
 #include "vtkSoftShadowPass.h"
@@ -10,7 +11,9 @@
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkLight.h>
+#include <vtkMatrix4x4.h>
 #include <vtkNew.h>
+#include <vtkPlaneSource.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
@@ -21,8 +24,11 @@
 
 #include <X11/Xlib.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
+#include <iostream>
 #include <memory>
 #include <stdexcept>
 #include <thread>
@@ -90,6 +96,114 @@ vtkSmartPointer<vtkActor> MakeActor(const SceneActor& description)
   return actor;
 }
 
+/// The model `description` imports, placed by its position, orientation and
+/// scale on top of the transforms the file gives its parts.
+ImportedModel Import(const SceneActor& description)
+{
+  ImportedModel model;
+  const std::string where = description.Path.empty() ? "" : FieldPath(description.Path, "import");
+  try
+  {
+    model = ImportModel(description.Import);
+  }
+  catch (const std::runtime_error& error)
+  {
+    // A staged scene's errors are filed under the model file already.
+    throw InputError(where,
+      where.empty() ? std::string(error.what())
+                    : "cannot import " + description.Import.string() + ": " + error.what());
+  }
+  if (!model.Warning.empty())
+  {
+    std::cerr << "softshadows: warning: " << description.Import.string() << ": " << model.Warning
+              << "\n";
+  }
+  vtkNew<vtkActor> placement;
+  const Vector3& p = description.Position;
+  const Vector3& o = description.Orientation;
+  const Vector3& s = description.Scale;
+  placement->SetPosition(p[0], p[1], p[2]);
+  placement->SetOrientation(o[0], o[1], o[2]);
+  placement->SetScale(s[0], s[1], s[2]);
+  vtkMatrix4x4* place = placement->GetMatrix();
+  for (vtkActor* actor : model.Actors)
+  {
+    // The importer's matrices are shared between a node's parts: make new ones.
+    vtkNew<vtkMatrix4x4> matrix;
+    if (vtkMatrix4x4* own = actor->GetUserMatrix())
+    {
+      vtkMatrix4x4::Multiply4x4(place, own, matrix);
+    }
+    else
+    {
+      matrix->DeepCopy(place);
+    }
+    actor->SetUserMatrix(matrix);
+  }
+  const auto transform = [&](Vector3& point, double w)
+  {
+    double in[4] = { point[0], point[1], point[2], w }, out[4];
+    place->MultiplyPoint(in, out);
+    point = { out[0], out[1], out[2] };
+  };
+  for (SceneLight& light : model.Lights)
+  {
+    const bool directional = light.Type == SceneLight::Kind::Directional;
+    transform(light.Position, directional ? 0.0 : 1.0);
+    transform(light.FocalPoint, 1.0);
+  }
+  if (model.HasCamera)
+  {
+    transform(model.Camera.Position, 1.0);
+    transform(model.Camera.FocalPoint, 1.0);
+    transform(model.Camera.ViewUp, 0.0);
+  }
+  return model;
+}
+
+/// Sizes for lights that come without one, as parts of the scene's size:
+/// soft shadows that show the technique, not a blur.
+constexpr double ImportedLightRadius = 0.02; ///< of the bounds' diagonal
+constexpr double ImportedSunRadius = 1.0;    ///< degrees
+constexpr double StagedLightRadius = 0.03;   ///< of the bounds' diagonal
+
+/// A staged model's floor (a square twice the bounds' diagonal, just under
+/// their lowest y: glTF is y-up) and, when nothing lights it, a spot light
+/// above and in front of it.
+void Stage(vtkRenderer* renderer, Scene& scene)
+{
+  double bounds[6];
+  renderer->ComputeVisiblePropBounds(bounds);
+  const double center[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+    0.5 * (bounds[4] + bounds[5]) };
+  const double diagonal = std::max(1e-6,
+    std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+      (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
+      (bounds[5] - bounds[4]) * (bounds[5] - bounds[4])));
+  // A gap of a thousandth keeps a flat bottom from fighting the floor.
+  const double floorY = bounds[2] - 1e-3 * diagonal;
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(center[0] - diagonal, floorY, center[2] + diagonal);
+  plane->SetPoint1(center[0] + diagonal, floorY, center[2] + diagonal);
+  plane->SetPoint2(center[0] - diagonal, floorY, center[2] - diagonal);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(plane->GetOutputPort());
+  vtkNew<vtkActor> floor;
+  floor->SetMapper(mapper);
+  floor->GetProperty()->SetColor(0.8, 0.8, 0.8);
+  renderer->AddActor(floor);
+  if (scene.Lights.empty())
+  {
+    SceneLight light;
+    light.Position = { center[0] + 0.35 * diagonal, center[1] + 1.1 * diagonal,
+      center[2] + 0.55 * diagonal };
+    light.FocalPoint = { center[0], floorY, center[2] };
+    light.ConeAngle = 35.0;
+    light.Radius = StagedLightRadius * diagonal;
+    scene.Lights.push_back(light);
+  }
+}
+
 /**
  * The X display, connected once for the whole run and given to every window.
  * VTK's own connection aborts the process when it fails. And Xvfb resets
@@ -136,13 +250,50 @@ vtkSmartPointer<vtkLight> MakeLight(const SceneLight& description)
 }
 
 //------------------------------------------------------------------------------
-vtkSmartPointer<vtkRenderer> BuildRenderer(const Scene& scene)
+vtkSmartPointer<vtkRenderer> BuildRenderer(Scene& scene)
 {
   auto renderer = vtkSmartPointer<vtkRenderer>::New();
   renderer->SetBackground(scene.Background.data());
+  std::vector<SceneLight> importedLights;
   for (const SceneActor& actor : scene.Actors)
   {
-    renderer->AddActor(MakeActor(actor));
+    if (actor.Import.empty())
+    {
+      renderer->AddActor(MakeActor(actor));
+      continue;
+    }
+    ImportedModel model = Import(actor);
+    for (vtkActor* part : model.Actors)
+    {
+      renderer->AddActor(part);
+    }
+    importedLights.insert(importedLights.end(), model.Lights.begin(), model.Lights.end());
+    if (model.HasCamera && !scene.Camera.Given)
+    {
+      scene.Camera = model.Camera;
+    }
+  }
+  // The scene's own lights, else the models' (sized to the scene).
+  if (scene.Lights.empty() && !importedLights.empty())
+  {
+    double bounds[6];
+    renderer->ComputeVisiblePropBounds(bounds);
+    const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+      (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
+      (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+    for (SceneLight& light : importedLights)
+    {
+      light.Radius = light.Type == SceneLight::Kind::Directional ? ImportedSunRadius
+                                                                 : ImportedLightRadius * diagonal;
+    }
+    scene.Lights = importedLights;
+  }
+  // A staged model fills the view; its floor reaches past it.
+  double modelBounds[6];
+  renderer->ComputeVisiblePropBounds(modelBounds);
+  if (scene.Staged)
+  {
+    Stage(renderer, scene);
   }
   if (!scene.Lights.empty())
   {
@@ -169,7 +320,14 @@ vtkSmartPointer<vtkRenderer> BuildRenderer(const Scene& scene)
     camera->SetPosition(0.0, 1.0, 2.5);
     camera->SetFocalPoint(0.0, 0.0, 0.0);
     camera->SetViewUp(0.0, 1.0, 0.0);
-    renderer->ResetCamera();
+    if (scene.Staged)
+    {
+      renderer->ResetCamera(modelBounds);
+    }
+    else
+    {
+      renderer->ResetCamera();
+    }
   }
   renderer->ResetCameraClippingRange();
   return renderer;

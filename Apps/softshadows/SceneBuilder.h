@@ -21,10 +21,13 @@ namespace softshadows
 {
 /**
  * Makes the renderer: actors (meshes read or made, normals added where
- * missing), scene lights with their radius, background and camera. Throws
- * InputError at `actors[i].file` when a mesh file cannot be read.
+ * missing; models imported), scene lights with their radius, background and
+ * camera. A scene without lights takes its models' lights, one without a
+ * camera the first model camera: both are written into `scene`, as is a
+ * staged scene's light. Throws InputError at `actors[i].file` or
+ * `actors[i].import` when a file cannot be read.
  */
-vtkSmartPointer<vtkRenderer> BuildRenderer(const Scene& scene);
+vtkSmartPointer<vtkRenderer> BuildRenderer(Scene& scene);
 
 /**
  * An off-screen window of `size` pixels showing `renderer`, without

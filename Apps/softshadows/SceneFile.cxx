@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "SceneFile.h"
 
+#include "ModelFiles.h"
 #include "Sources.h"
 #include "Techniques.h"
 
@@ -218,19 +219,47 @@ void ReadMeshFile(const Json& value, const std::string& path,
   }
 }
 
+void ReadModelFile(const Json& value, const std::string& path,
+  const std::filesystem::path& sceneFolder, SceneActor& actor)
+{
+  const std::string name = ReadString(value, path);
+  if (!IsModelFile(name))
+  {
+    throw InputError(path, "'" + name + "': not a model file (use .gltf, .glb or .obj)");
+  }
+  actor.Import = sceneFolder / name;
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(actor.Import, error))
+  {
+    throw InputError(
+      path, "'" + name + "': no such file (looked for " + actor.Import.string() + ")");
+  }
+}
+
 SceneActor ReadActor(
   const Json& value, const std::string& path, const std::filesystem::path& folder)
 {
   CheckObject(value, path,
-    { "source", "params", "file", "position", "orientation", "scale", "color", "opacity", "pbr" });
+    { "source", "params", "file", "import", "position", "orientation", "scale", "color", "opacity",
+      "pbr" });
   SceneActor actor;
   actor.Path = path;
-  if (value.contains("source") == value.contains("file"))
+  const int kinds = static_cast<int>(value.contains("source")) +
+    static_cast<int>(value.contains("file")) + static_cast<int>(value.contains("import"));
+  if (kinds != 1)
   {
-    throw InputError(path,
-      value.contains("source") ? "give either source or file, not both" : "needs source or file");
+    throw InputError(
+      path, kinds == 0 ? "needs source, file or import" : "give one of source, file and import");
   }
-  if (value.contains("source"))
+  if (value.contains("import"))
+  {
+    for (const char* field : { "params", "color", "opacity", "pbr" })
+    {
+      RejectField(value, path, field, "an imported model's materials come from its file");
+    }
+    ReadModelFile(value["import"], FieldPath(path, "import"), folder, actor);
+  }
+  else if (value.contains("source"))
   {
     actor.Source = ReadString(value["source"], FieldPath(path, "source"));
     const Source& source = FindSource(actor.Source, FieldPath(path, "source"));
@@ -450,6 +479,25 @@ Json SceneShadows::ParametersOf(const std::string& name) const
 //------------------------------------------------------------------------------
 Scene LoadScene(const std::filesystem::path& file)
 {
+  if (IsModelFile(file))
+  {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(file, error))
+    {
+      throw InputError("", "no such file");
+    }
+    Scene scene;
+    scene.File = file;
+    scene.Name = file.stem().string();
+    scene.Staged = true;
+    // Its lights get a radius (BuildRenderer()): show them soft.
+    scene.Shadows.Technique = "contact";
+    SceneActor model;
+    // Errors about it are the file's own, not a field's.
+    model.Import = file;
+    scene.Actors.push_back(model);
+    return scene;
+  }
   return ParseScene(ReadFile(file), file);
 }
 

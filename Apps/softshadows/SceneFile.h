@@ -60,9 +60,12 @@ enum class MeshFormat
 struct SceneActor
 {
   std::string Path;   ///< `actors[i]`, for messages about it
-  std::string Source; ///< a built-in source, or empty when File is set
+  std::string Source; ///< a built-in source, or empty when File or Import is set
   Json Parameters;    ///< the source's parameters, defaults filled in
   std::filesystem::path File;
+  /// A model file (glTF, OBJ + MTL) imported whole with its materials,
+  /// cameras and lights (ModelFiles.h); Color, Opacity and PBR are unused.
+  std::filesystem::path Import;
   MeshFormat Format = MeshFormat::VTP; ///< of File
   Vector3 Position{ 0.0, 0.0, 0.0 };
   Vector3 Orientation{ 0.0, 0.0, 0.0 }; ///< degrees, as vtkProp3D
@@ -94,10 +97,14 @@ struct Scene
   std::vector<SceneLight> Lights;
   std::vector<SceneActor> Actors;
   SceneShadows Shadows;
+  /// A model file named instead of a scene file: BuildRenderer() sets it on
+  /// a floor under the model, lit from above when the model has no lights.
+  bool Staged = false;
 };
 
 /**
- * Reads and checks a scene file. Throws InputError; its Where() is a field
+ * Reads and checks a scene file; a model file (.gltf, .glb, .obj) is the
+ * staged scene of that one model. Throws InputError; its Where() is a field
  * path (empty for problems with the file as a whole).
  */
 Scene LoadScene(const std::filesystem::path& file);

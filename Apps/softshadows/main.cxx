@@ -48,8 +48,9 @@ const char* const Usage =
   softshadows quality SCENE.json --techniques SPEC,SPEC,... [--size WxH]
                       [--light I] [--samples N] [--json]
 
-A technique SPEC is name[:variant]; `softshadows techniques` lists them with
-their parameters. Rendering needs an X display: run under `xvfb-run -a`.
+SCENE.json is a scene file, or a model file (.gltf, .glb, .obj) staged on a
+floor. A technique SPEC is name[:variant]; `softshadows techniques` lists them
+with their parameters. Rendering needs an X display: run under `xvfb-run -a`.
 
   techniques   list techniques, variants and parameters; --specs prints only
                every SPEC, one a line
