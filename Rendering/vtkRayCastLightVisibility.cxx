@@ -31,6 +31,7 @@
 #include <glm/matrix.hpp>
 #include <glm/trigonometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -334,129 +335,137 @@ int vtkRayCastLightVisibility::RequestData(
     point ? 1 : std::max(1, static_cast<int>(std::lround(std::sqrt(this->Samples))));
   const unsigned int seed = this->Seed;
 
-  vtkSMPTools::For(0, height,
-    [&](vtkIdType firstRow, vtkIdType lastRow)
-    {
-      RTCIntersectContext context;
-      rtcInitIntersectContext(&context);
-      for (vtkIdType y = firstRow; y < lastRow; ++y)
+  // In bands of rows, so that progress is reported from this thread, as
+  // VTK's observers expect; each band still runs on every core.
+  const vtkIdType bands = std::min<vtkIdType>(height, 32);
+  this->UpdateProgress(0.0);
+  for (vtkIdType band = 0; band < bands; ++band)
+  {
+    vtkSMPTools::For(height * band / bands, height * (band + 1) / bands,
+      [&](vtkIdType firstRow, vtkIdType lastRow)
       {
-        for (int x = 0; x < width; ++x)
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        for (vtkIdType y = firstRow; y < lastRow; ++y)
         {
-          const size_t index = static_cast<size_t>(y) * width + x;
-          // The camera ray through the pixel's centre, from the near plane.
-          const double nx = 2.0 * (x + 0.5) / width - 1.0;
-          const double ny = 2.0 * (y + 0.5) / height - 1.0;
-          const glm::dvec3 origin = unproject(nx, ny, -1.0);
-          const glm::dvec3 direction = glm::normalize(unproject(nx, ny, 1.0) - origin);
-          RTCRayHit hit;
-          hit.ray.org_x = static_cast<float>(origin.x);
-          hit.ray.org_y = static_cast<float>(origin.y);
-          hit.ray.org_z = static_cast<float>(origin.z);
-          hit.ray.dir_x = static_cast<float>(direction.x);
-          hit.ray.dir_y = static_cast<float>(direction.y);
-          hit.ray.dir_z = static_cast<float>(direction.z);
-          hit.ray.tnear = 0.0f;
-          hit.ray.tfar = std::numeric_limits<float>::infinity();
-          hit.ray.mask = 0xFFFFFFFFU;
-          hit.ray.flags = 0;
-          hit.ray.time = 0.0f;
-          hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-          hit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-          rtcIntersect1(visible.get(), &context, &hit);
-          if (hit.hit.geomID == RTC_INVALID_GEOMETRY_ID)
+          for (int x = 0; x < width; ++x)
           {
-            continue;
-          }
-          const glm::dvec3 at = origin + static_cast<double>(hit.ray.tfar) * direction;
-          glm::dvec3 n = glm::normalize(glm::dvec3(hit.hit.Ng_x, hit.hit.Ng_y, hit.hit.Ng_z));
-          n = glm::dot(n, direction) > 0.0 ? -n : n; // the side the camera sees
-          surfaceOf[index] = hit.hit.geomID;
-          position[index] = at;
-          normal[index] = n;
-
-          // Towards the light's centre: the cone of directions to sample.
-          glm::dvec3 toLight = light.ToLight;
-          double reach = std::numeric_limits<double>::infinity();
-          double spread = light.Radius; // cone half-angle
-          if (!light.Directional)
-          {
-            const glm::dvec3 offsetToLight = light.Position - at;
-            const double distance = glm::length(offsetToLight);
-            if (!(distance > light.Radius))
+            const size_t index = static_cast<size_t>(y) * width + x;
+            // The camera ray through the pixel's centre, from the near plane.
+            const double nx = 2.0 * (x + 0.5) / width - 1.0;
+            const double ny = 2.0 * (y + 0.5) / height - 1.0;
+            const glm::dvec3 origin = unproject(nx, ny, -1.0);
+            const glm::dvec3 direction = glm::normalize(unproject(nx, ny, 1.0) - origin);
+            RTCRayHit hit;
+            hit.ray.org_x = static_cast<float>(origin.x);
+            hit.ray.org_y = static_cast<float>(origin.y);
+            hit.ray.org_z = static_cast<float>(origin.z);
+            hit.ray.dir_x = static_cast<float>(direction.x);
+            hit.ray.dir_y = static_cast<float>(direction.y);
+            hit.ray.dir_z = static_cast<float>(direction.z);
+            hit.ray.tnear = 0.0f;
+            hit.ray.tfar = std::numeric_limits<float>::infinity();
+            hit.ray.mask = 0xFFFFFFFFU;
+            hit.ray.flags = 0;
+            hit.ray.time = 0.0f;
+            hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+            hit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+            rtcIntersect1(visible.get(), &context, &hit);
+            if (hit.hit.geomID == RTC_INVALID_GEOMETRY_ID)
             {
-              visibility[index] = 1.0f; // inside the light
-              facing[index] = 1.0f;
               continue;
             }
-            toLight = offsetToLight / distance;
-            reach = distance;
-            spread = std::asin(light.Radius / distance);
-            inCone[index] =
-              !light.Spot || glm::dot(-toLight, light.Axis) >= std::cos(0.9 * light.ConeAngle)
-              ? 1.0f
-              : 0.0f;
-          }
-          else
-          {
-            inCone[index] = 1.0f;
-          }
-          facing[index] = static_cast<float>(glm::dot(n, toLight));
+            const glm::dvec3 at = origin + static_cast<double>(hit.ray.tfar) * direction;
+            glm::dvec3 n = glm::normalize(glm::dvec3(hit.hit.Ng_x, hit.hit.Ng_y, hit.hit.Ng_z));
+            n = glm::dot(n, direction) > 0.0 ? -n : n; // the side the camera sees
+            surfaceOf[index] = hit.hit.geomID;
+            position[index] = at;
+            normal[index] = n;
 
-          glm::dvec3 u, v;
-          Basis(toLight, u, v);
-          const glm::dvec3 start = at + offset * n;
-          const glm::dvec2 jitter = Jitter(static_cast<unsigned int>(index), seed);
-          const double cosSpread = std::cos(spread);
-          int lit = 0;
-          for (int sy = 0; sy < strata; ++sy)
-          {
-            for (int sx = 0; sx < strata; ++sx)
+            // Towards the light's centre: the cone of directions to sample.
+            glm::dvec3 toLight = light.ToLight;
+            double reach = std::numeric_limits<double>::infinity();
+            double spread = light.Radius; // cone half-angle
+            if (!light.Directional)
             {
-              glm::dvec3 ray = toLight;
-              double length = reach;
-              if (!point)
+              const glm::dvec3 offsetToLight = light.Position - at;
+              const double distance = glm::length(offsetToLight);
+              if (!(distance > light.Radius))
               {
-                // Uniform over the cone's solid angle: cos(a) uniform in
-                // [cos(spread), 1], azimuth uniform.
-                const double s = std::fmod((sx + 0.5) / strata + jitter.x, 1.0);
-                const double t = std::fmod((sy + 0.5) / strata + jitter.y, 1.0);
-                const double cosA = 1.0 - s * (1.0 - cosSpread);
-                const double sinA = std::sqrt(std::max(0.0, 1.0 - cosA * cosA));
-                const double phi = 2.0 * glm::pi<double>() * t;
-                ray = cosA * toLight + sinA * (std::cos(phi) * u + std::sin(phi) * v);
-                if (!light.Directional)
-                {
-                  // To the sphere's near side along this direction.
-                  const double along = reach * cosA;
-                  const double across = reach * reach - along * along;
-                  length = along - std::sqrt(std::max(0.0, light.Radius * light.Radius - across));
-                }
+                visibility[index] = 1.0f; // inside the light
+                facing[index] = 1.0f;
+                continue;
               }
-              if (glm::dot(ray, n) <= 0.0)
-              {
-                continue; // below the surface: it shadows itself
-              }
-              RTCRay shadow;
-              shadow.org_x = static_cast<float>(start.x);
-              shadow.org_y = static_cast<float>(start.y);
-              shadow.org_z = static_cast<float>(start.z);
-              shadow.dir_x = static_cast<float>(ray.x);
-              shadow.dir_y = static_cast<float>(ray.y);
-              shadow.dir_z = static_cast<float>(ray.z);
-              shadow.tnear = 0.0f;
-              shadow.tfar = static_cast<float>(length);
-              shadow.mask = 0xFFFFFFFFU;
-              shadow.flags = 0;
-              shadow.time = 0.0f;
-              rtcOccluded1(casters.get(), &context, &shadow);
-              lit += shadow.tfar >= 0.0f ? 1 : 0; // -inf when occluded
+              toLight = offsetToLight / distance;
+              reach = distance;
+              spread = std::asin(light.Radius / distance);
+              inCone[index] =
+                !light.Spot || glm::dot(-toLight, light.Axis) >= std::cos(0.9 * light.ConeAngle)
+                ? 1.0f
+                : 0.0f;
             }
+            else
+            {
+              inCone[index] = 1.0f;
+            }
+            facing[index] = static_cast<float>(glm::dot(n, toLight));
+
+            glm::dvec3 u, v;
+            Basis(toLight, u, v);
+            const glm::dvec3 start = at + offset * n;
+            const glm::dvec2 jitter = Jitter(static_cast<unsigned int>(index), seed);
+            const double cosSpread = std::cos(spread);
+            int lit = 0;
+            for (int sy = 0; sy < strata; ++sy)
+            {
+              for (int sx = 0; sx < strata; ++sx)
+              {
+                glm::dvec3 ray = toLight;
+                double length = reach;
+                if (!point)
+                {
+                  // Uniform over the cone's solid angle: cos(a) uniform in
+                  // [cos(spread), 1], azimuth uniform.
+                  const double s = std::fmod((sx + 0.5) / strata + jitter.x, 1.0);
+                  const double t = std::fmod((sy + 0.5) / strata + jitter.y, 1.0);
+                  const double cosA = 1.0 - s * (1.0 - cosSpread);
+                  const double sinA = std::sqrt(std::max(0.0, 1.0 - cosA * cosA));
+                  const double phi = 2.0 * glm::pi<double>() * t;
+                  ray = cosA * toLight + sinA * (std::cos(phi) * u + std::sin(phi) * v);
+                  if (!light.Directional)
+                  {
+                    // To the sphere's near side along this direction.
+                    const double along = reach * cosA;
+                    const double across = reach * reach - along * along;
+                    length = along - std::sqrt(std::max(0.0, light.Radius * light.Radius - across));
+                  }
+                }
+                if (glm::dot(ray, n) <= 0.0)
+                {
+                  continue; // below the surface: it shadows itself
+                }
+                RTCRay shadow;
+                shadow.org_x = static_cast<float>(start.x);
+                shadow.org_y = static_cast<float>(start.y);
+                shadow.org_z = static_cast<float>(start.z);
+                shadow.dir_x = static_cast<float>(ray.x);
+                shadow.dir_y = static_cast<float>(ray.y);
+                shadow.dir_z = static_cast<float>(ray.z);
+                shadow.tnear = 0.0f;
+                shadow.tfar = static_cast<float>(length);
+                shadow.mask = 0xFFFFFFFFU;
+                shadow.flags = 0;
+                shadow.time = 0.0f;
+                rtcOccluded1(casters.get(), &context, &shadow);
+                lit += shadow.tfar >= 0.0f ? 1 : 0; // -inf when occluded
+              }
+            }
+            visibility[index] = static_cast<float>(lit) / static_cast<float>(strata * strata);
           }
-          visibility[index] = static_cast<float>(lit) / static_cast<float>(strata * strata);
         }
-      }
-    });
+      });
+    this->UpdateProgress(static_cast<double>(band + 1) / static_cast<double>(bands));
+  }
 
   // SPEC's pixels: front-lit, in the cone, and with four neighbours on the
   // same surface, each within a quarter of their distance of this pixel's

@@ -30,7 +30,9 @@
  *   0.9 of a spot light's cone, and whose four neighbours lie on the same
  *   actor's surface without a step in depth (silhouettes excluded).
  *
- * Needs no OpenGL context: the renderer need not be in a window.
+ * Needs no OpenGL context: the renderer need not be in a window. Reports
+ * progress (vtkAlgorithm::UpdateProgress, ProgressEvent) in 32 bands of
+ * rows.
  */
 
 #ifndef vtkRayCastLightVisibility_h

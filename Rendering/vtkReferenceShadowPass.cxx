@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkReferenceShadowPass.h"
 
+#include "vtkCommand.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -91,6 +92,14 @@ bool vtkReferenceShadowPass::RenderScreenSpace(const vtkRenderState* s)
   normals->Activate();
   internals.NormalsUnit = normals->GetTextureUnit();
   auto& lights = this->Maps->GetLights();
+  // ProgressEvent's fraction over every light's samples: a frame can take
+  // seconds.
+  int total = 0;
+  for (const auto& light : lights)
+  {
+    total += light.Radius > 0.0 ? this->NumberOfSamples : 1;
+  }
+  int done = 0;
   for (size_t slot = 0; slot < lights.size(); ++slot)
   {
     const auto& light = lights[slot];
@@ -136,6 +145,8 @@ bool vtkReferenceShadowPass::RenderScreenSpace(const vtkRenderState* s)
         normals->Deactivate();
         return false;
       }
+      double progress = static_cast<double>(++done) / static_cast<double>(total);
+      this->InvokeEvent(vtkCommand::ProgressEvent, &progress);
     }
     this->Screen->EndVisibility();
   }

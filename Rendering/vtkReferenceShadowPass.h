@@ -27,7 +27,9 @@
  * Screen-space visibility belongs to the nearest opaque surface; translucent
  * surfaces receive the hard shadow of the light's centre.
  *
- * Slow by design: NumberOfSamples scene depth passes per light per frame.
+ * Slow by design: NumberOfSamples scene depth passes per light per frame;
+ * after each the pass invokes vtkCommand::ProgressEvent with the frame's
+ * fraction done (a double*), for progress reports.
  */
 
 #ifndef vtkReferenceShadowPass_h

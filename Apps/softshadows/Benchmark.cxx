@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "Benchmark.h"
 
+#include "vtkSoftShadowPass.h"
+
 #include <vtkLight.h>
 #include <vtkLightCollection.h>
 #include <vtkMath.h>
@@ -96,18 +98,31 @@ double Round3(double value)
 
 //------------------------------------------------------------------------------
 std::vector<Timing> RunBenchmark(vtkRenderWindow* window, vtkRenderer* renderer,
-  std::vector<TechniqueInstance>& techniques, int frames, int warmUp, int mapSize)
+  std::vector<TechniqueInstance>& techniques, int frames, int warmUp, int mapSize,
+  Progress* progress)
 {
   using Clock = std::chrono::steady_clock;
   std::vector<std::vector<double>> times(techniques.size());
   std::vector<std::vector<double>> cpu(techniques.size());
   LightOrbit orbit(FirstLight(renderer));
+  const double total = static_cast<double>((warmUp + frames) * techniques.size());
   for (int round = 0; round < warmUp + frames; ++round)
   {
     for (std::size_t t = 0; t < techniques.size(); ++t)
     {
       orbit.Step();
       renderer->SetPass(techniques[t].Pass);
+      // A frame of `reference` takes seconds: its samples count too.
+      const double done = static_cast<double>(round * techniques.size() + t);
+      const std::string what = "bench: frame " + std::to_string(round + 1) + "/" +
+        std::to_string(warmUp + frames) + ", " + techniques[t].Spec;
+      Progress::Observation samples;
+      if (progress)
+      {
+        progress->Show(what, done / total);
+        samples = progress->Observe(techniques[t].Shadows,
+          [&](double fraction) { progress->Show(what, (done + fraction) / total); });
+      }
       const auto start = Clock::now();
       window->Render();
       window->MakeCurrent();

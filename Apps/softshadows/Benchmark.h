@@ -8,6 +8,7 @@
 #ifndef softshadows_Benchmark_h
 #define softshadows_Benchmark_h
 
+#include "Progress.h"
 #include "Techniques.h"
 
 #include <array>
@@ -26,7 +27,7 @@ struct Timing
   int Frames = 0;
   double MeanMs = 0.0;
   double MedianMs = 0.0;
-  double RatioToHard = 0.0; ///< 0 when `hard` was not timed
+  double RatioToHard = 0.0;  ///< 0 when `hard` was not timed
   double CpuMedianMs = -1.0; ///< the technique's own CPU work a frame; < 0: not reported
   int MapSize = 0;
   std::array<int, 2> Size{ 0, 0 };
@@ -37,10 +38,11 @@ struct Timing
  * after `warmUp` untimed rounds, moving the first light a little along a small
  * orbit before each frame so every technique redraws its shadow maps. A
  * frame's time runs from the start of Render() to glFinish() returning.
- * Leaves the light where it started.
+ * Leaves the light where it started. Shows its progress on `progress`.
  */
 std::vector<Timing> RunBenchmark(vtkRenderWindow* window, vtkRenderer* renderer,
-  std::vector<TechniqueInstance>& techniques, int frames, int warmUp, int mapSize);
+  std::vector<TechniqueInstance>& techniques, int frames, int warmUp, int mapSize,
+  Progress* progress = nullptr);
 
 /// A table for people.
 void PrintTimingTable(std::ostream& os, const std::vector<Timing>& timings);

@@ -31,7 +31,7 @@ vtkSmartPointer<vtkImageData> Image8(vtkImageData* like, int components)
 
 //------------------------------------------------------------------------------
 vtkSmartPointer<vtkImageData> CastTruth(
-  vtkRenderer* renderer, const std::array<int, 2>& size, int light, int samples)
+  vtkRenderer* renderer, const std::array<int, 2>& size, int light, int samples, Progress* progress)
 {
   vtkNew<vtkRayCastLightVisibility> caster;
   caster->SetRenderer(renderer);
@@ -39,7 +39,17 @@ vtkSmartPointer<vtkImageData> CastTruth(
   caster->SetLightIndex(light);
   caster->SetSamples(samples);
   MessageCapture messages;
+  Progress::Observation observation;
+  if (progress)
+  {
+    observation = progress->Observe(
+      caster, [progress](double fraction) { progress->Show("ray casting", fraction); });
+  }
   caster->Update();
+  if (progress)
+  {
+    progress->Clear();
+  }
   if (messages.HasError())
   {
     throw std::runtime_error("ray casting failed: " + messages.FirstMessage());

@@ -9,6 +9,8 @@
 #ifndef softshadows_Quality_h
 #define softshadows_Quality_h
 
+#include "Progress.h"
+
 #include <vtkSmartPointer.h>
 
 #include <array>
@@ -18,9 +20,10 @@ class vtkRenderer;
 
 namespace softshadows
 {
-/// The truth for light `light` of `renderer`, at `size` pixels.
-vtkSmartPointer<vtkImageData> CastTruth(
-  vtkRenderer* renderer, const std::array<int, 2>& size, int light, int samples);
+/// The truth for light `light` of `renderer`, at `size` pixels; the ray
+/// casting's progress shown on `progress`.
+vtkSmartPointer<vtkImageData> CastTruth(vtkRenderer* renderer, const std::array<int, 2>& size,
+  int light, int samples, Progress* progress = nullptr);
 
 /// The truth as `render --shadow-only` writes a frame: grey visibility, alpha coverage.
 vtkSmartPointer<vtkImageData> TruthImage(vtkImageData* truth);

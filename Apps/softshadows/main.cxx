@@ -7,6 +7,7 @@
 #include "CommandLine.h"
 #include "Images.h"
 #include "MessageCapture.h"
+#include "Progress.h"
 #include "Quality.h"
 #include "SceneBuilder.h"
 #include "SceneFile.h"
@@ -39,18 +40,20 @@ const char* const Usage =
   R"(Usage:
   softshadows techniques [--specs]
   softshadows render SCENE.json [--technique SPEC] [--size WxH] [--output FILE]
-                     [--shadow-only] [--light I] [--debug-view]
+                     [--shadow-only] [--light I] [--debug-view] [--quiet]
   softshadows bench SCENE.json --techniques SPEC,SPEC,... [--size WxH] [--frames N] [--json]
+                    [--quiet]
   softshadows gallery SCENE.json --techniques SPEC,SPEC,... --output-dir DIR
-                     [--size WxH] [--frames N]
+                     [--size WxH] [--frames N] [--quiet]
   softshadows truth SCENE.json [--size WxH] [--output FILE] [--light I]
-                    [--samples N] [--mask FILE]
+                    [--samples N] [--mask FILE] [--quiet]
   softshadows quality SCENE.json --techniques SPEC,SPEC,... [--size WxH]
-                      [--light I] [--samples N] [--json]
+                      [--light I] [--samples N] [--json] [--quiet]
 
 SCENE.json is a scene file, or a model file (.gltf, .glb, .obj) staged on a
 floor. A technique SPEC is name[:variant]; `softshadows techniques` lists them
 with their parameters. Rendering needs an X display: run under `xvfb-run -a`.
+Long work shows its progress on stderr when it is a terminal; --quiet hides it.
 
   techniques   list techniques, variants and parameters; --specs prints only
                every SPEC, one a line
@@ -205,7 +208,7 @@ int ListTechniques(const std::vector<std::string>& arguments)
 int Render(const std::vector<std::string>& arguments)
 {
   CommandLine line("render", arguments, true, { "--technique", "--size", "--output", "--light" },
-    { "--shadow-only", "--debug-view" });
+    { "--shadow-only", "--debug-view", "--quiet" });
   // Options first: their mistakes are found without reading the scene.
   const bool shadowOnly = line.Has("--shadow-only");
   if (line.Has("--light") && !shadowOnly)
@@ -265,7 +268,13 @@ int Render(const std::vector<std::string>& arguments)
 
   vtkRenderWindow* window = session.OpenWindow(size, shadowOnly);
   MessageCapture watch(MessageCapture::Mode::Watch);
-  session.Render(technique);
+  Progress progress(line.Has("--quiet"));
+  {
+    Progress::Observation samples = progress.Observe(technique.Shadows,
+      [&](double fraction) { progress.Show(technique.Spec + ": samples", fraction); });
+    session.Render(technique);
+  }
+  progress.Clear();
   vtkSmartPointer<vtkImageData> image = CaptureWindow(window, shadowOnly);
   WritePNG(shadowOnly ? GreyAndAlpha(image) : image, output);
   std::cout << "wrote " << output.string() << "\n";
@@ -276,7 +285,7 @@ int Render(const std::vector<std::string>& arguments)
 int Bench(const std::vector<std::string>& arguments)
 {
   CommandLine line(
-    "bench", arguments, true, { "--techniques", "--size", "--frames" }, { "--json" });
+    "bench", arguments, true, { "--techniques", "--size", "--frames" }, { "--json", "--quiet" });
   const std::vector<TechniqueSpec> specs = WithHard(line.TechniqueList("--techniques"));
   const int frames = line.Integer("--frames", 1, 100000, 30);
   const std::array<int, 2> size = line.Size();
@@ -284,8 +293,10 @@ int Bench(const std::vector<std::string>& arguments)
   Session session(line, specs);
   vtkRenderWindow* window = session.OpenWindow(size, false);
   MessageCapture watch(MessageCapture::Mode::Watch);
+  Progress progress(line.Has("--quiet"));
   const std::vector<Timing> timings = RunBenchmark(window, session.Renderer, session.Techniques,
-    frames, WarmUpFrames, session.Description.Shadows.MapSize);
+    frames, WarmUpFrames, session.Description.Shadows.MapSize, &progress);
+  progress.Clear();
   if (line.Has("--json"))
   {
     PrintTimingJson(std::cout, timings);
@@ -300,8 +311,8 @@ int Bench(const std::vector<std::string>& arguments)
 
 int Gallery(const std::vector<std::string>& arguments)
 {
-  CommandLine line(
-    "gallery", arguments, true, { "--techniques", "--output-dir", "--size", "--frames" }, {});
+  CommandLine line("gallery", arguments, true,
+    { "--techniques", "--output-dir", "--size", "--frames" }, { "--quiet" });
   const std::vector<TechniqueSpec> shown = line.TechniqueList("--techniques");
   const std::filesystem::path folder = line.Value("--output-dir");
   const int frames = line.Integer("--frames", 1, 100000, 10);
@@ -318,6 +329,7 @@ int Gallery(const std::vector<std::string>& arguments)
 
   vtkRenderWindow* window = session.OpenWindow(size, false);
   MessageCapture watch(MessageCapture::Mode::Watch);
+  Progress progress(line.Has("--quiet"));
   std::vector<vtkSmartPointer<vtkImageData>> tiles;
   for (const TechniqueInstance& technique : session.Techniques)
   {
@@ -327,7 +339,17 @@ int Gallery(const std::vector<std::string>& arguments)
     {
       continue;
     }
-    session.Render(technique);
+    const double done = static_cast<double>(tiles.size()) / static_cast<double>(shown.size());
+    const std::string what = "gallery: " + technique.Spec + " (" +
+      std::to_string(tiles.size() + 1) + "/" + std::to_string(shown.size()) + ")";
+    progress.Show(what, done);
+    {
+      Progress::Observation samples = progress.Observe(technique.Shadows,
+        [&](double fraction)
+        { progress.Show(what, done + fraction / static_cast<double>(shown.size())); });
+      session.Render(technique);
+    }
+    progress.Clear();
     vtkSmartPointer<vtkImageData> image = CaptureWindow(window, false);
     const std::filesystem::path file = folder / (FileNameOf(technique.Spec) + ".png");
     WritePNG(image, file);
@@ -341,7 +363,8 @@ int Gallery(const std::vector<std::string>& arguments)
   std::cout << "wrote " << (folder / "gallery.png").string() << "\n\n";
 
   const std::vector<Timing> timings = RunBenchmark(window, session.Renderer, session.Techniques,
-    frames, WarmUpFrames, session.Description.Shadows.MapSize);
+    frames, WarmUpFrames, session.Description.Shadows.MapSize, &progress);
+  progress.Clear();
   PrintTimingTable(std::cout, timings);
   FailOnError(watch);
   return 0;
@@ -362,15 +385,16 @@ int LightOption(const CommandLine& line, const Scene& scene)
 
 int Truth(const std::vector<std::string>& arguments)
 {
-  CommandLine line(
-    "truth", arguments, true, { "--size", "--output", "--light", "--samples", "--mask" }, {});
+  CommandLine line("truth", arguments, true,
+    { "--size", "--output", "--light", "--samples", "--mask" }, { "--quiet" });
   const std::array<int, 2> size = line.Size();
   const int samples = line.Integer("--samples", 1, 65536, 256);
   Session session(line, {});
   const Scene& scene = session.Description;
   const int light = LightOption(line, scene);
+  Progress progress(line.Has("--quiet"));
   vtkSmartPointer<vtkImageData> truth =
-    CastTruth(session.Renderer, size[0] > 0 ? size : scene.Size, light, samples);
+    CastTruth(session.Renderer, size[0] > 0 ? size : scene.Size, light, samples, &progress);
   const std::filesystem::path output = line.Has("--output")
     ? std::filesystem::path(line.Value("--output"))
     : std::filesystem::path(FileNameOf(scene.Name) + "-truth.png");
@@ -386,8 +410,8 @@ int Truth(const std::vector<std::string>& arguments)
 
 int Quality(const std::vector<std::string>& arguments)
 {
-  CommandLine line(
-    "quality", arguments, true, { "--techniques", "--size", "--light", "--samples" }, { "--json" });
+  CommandLine line("quality", arguments, true, { "--techniques", "--size", "--light", "--samples" },
+    { "--json", "--quiet" });
   const std::vector<TechniqueSpec> specs = line.TechniqueList("--techniques");
   const int samples = line.Integer("--samples", 1, 65536, 256);
   Session session(line, specs);
@@ -403,7 +427,9 @@ int Quality(const std::vector<std::string>& arguments)
     technique.Shadows->SetShadowOnlyLight(light);
   }
   const std::array<int, 2> pixels = line.Size()[0] > 0 ? line.Size() : scene.Size;
-  vtkSmartPointer<vtkImageData> truth = CastTruth(session.Renderer, pixels, light, samples);
+  Progress progress(line.Has("--quiet"));
+  vtkSmartPointer<vtkImageData> truth =
+    CastTruth(session.Renderer, pixels, light, samples, &progress);
   session.Renderer->SetBackground(0.0, 0.0, 0.0);
   session.Renderer->SetBackgroundAlpha(0.0);
   vtkRenderWindow* window = session.OpenWindow(pixels, true);
@@ -418,7 +444,12 @@ int Quality(const std::vector<std::string>& arguments)
   }
   for (const TechniqueInstance& technique : session.Techniques)
   {
-    session.Render(technique);
+    {
+      Progress::Observation samples = progress.Observe(technique.Shadows,
+        [&](double fraction) { progress.Show(technique.Spec + ": samples", fraction); });
+      session.Render(technique);
+    }
+    progress.Clear();
     const QualityFigures figures = CompareWithTruth(CaptureWindow(window, true), truth);
     if (json)
     {

@@ -5,6 +5,8 @@ message naming the field for every malformed scene."""
 import json
 import math
 import os
+import pty
+import subprocess
 import tempfile
 
 import shadowtest as st
@@ -92,3 +94,52 @@ with tempfile.TemporaryDirectory() as folder:
     hard_row = [r for r in rows if r["technique"] == "hard"][0]
     st.check(abs(hard_row["ratio_to_hard"] - 1.0) < 1e-9 and hard_row["size"] == [64, 48],
              "bench: hard's ratio is 1 and the size is the override")
+
+    # Progress: on stderr only when it is a terminal (a pseudo-terminal
+    # here), one line rewritten in place and cleared at the end; none with
+    # --quiet or into a pipe, where stdout is what it always was.
+    soft_file = os.path.join(folder, "soft.json")
+    with open(soft_file, "w") as f:
+        json.dump(st.ball_scene(light_radius=0.3, size=(64, 48), map_size=256), f)
+
+    def with_terminal(args):
+        master, slave = pty.openpty()
+        process = subprocess.Popen([st.SOFTSHADOWS] + args, stdout=subprocess.PIPE,
+                                   stderr=slave, env=st.PROGRAM_ENV)
+        os.close(slave)
+        shown = b""
+        while True:
+            try:
+                chunk = os.read(master, 4096)
+            except OSError:
+                break
+            if not chunk:
+                break
+            shown += chunk
+        out = process.stdout.read().decode()
+        process.wait()
+        os.close(master)
+        st.check(process.returncode == 0, "%s under a terminal: exit 0" % args[0])
+        return shown.decode(), out
+
+    small = ["--output", os.path.join(folder, "p.png")]
+    shown, out = with_terminal(["render", soft_file, "--technique", "reference"] + small)
+    st.check("reference: samples" in shown and "100%" in shown and shown.endswith("\r\x1b[K")
+             and "\n" not in shown,
+             "render reference: samples shown in place and cleared: %r" % shown[-120:])
+    st.check(out.startswith("wrote "), "render's stdout as before: %r" % out)
+    shown, _ = with_terminal(["render", soft_file, "--technique", "reference", "--quiet"] + small)
+    st.check(shown == "", "--quiet: nothing on the terminal: %r" % shown[:120])
+    piped = st.run(["render", soft_file, "--technique", "reference"] + small)
+    st.check(piped.stderr == "", "into a pipe: no progress: %r" % piped.stderr[:120])
+    shown, out = with_terminal(["bench", soft_file, "--techniques", "reference", "--frames",
+                                "1", "--size", "64x48"])
+    st.check("bench: frame 4/4, reference" in shown and "x hard" in out,
+             "bench: frames and techniques shown: %r" % shown[-120:])
+    shown, out = with_terminal(["gallery", soft_file, "--techniques", "hard,reference",
+                                "--frames", "1", "--size", "64x48", "--output-dir",
+                                os.path.join(folder, "g")])
+    st.check("gallery: reference (2/2)" in shown, "gallery: techniques shown: %r" % shown[-120:])
+    shown, _ = with_terminal(["truth", soft_file, "--size", "64x48", "--samples", "16",
+                              "--output", os.path.join(folder, "t.png")])
+    st.check("ray casting" in shown, "truth: ray casting shown: %r" % shown[-120:])
