@@ -13,7 +13,7 @@ cd "$(softshadows_root)"
 
 # g++ brings the sanitizers' runtimes (libasan8, libubsan1); numpy only for
 # the tests' numeric checks.
-softshadows_install_packages "${SOFTSHADOWS_PACKAGES[@]}" python3-numpy assimp-testmodels
+softshadows_install_packages "${SOFTSHADOWS_PACKAGES[@]}" python3-numpy assimp-testmodels xdotool
 # Optimized as the tests need it to run in time, with lines in reports.
 softshadows_build build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSOFTSHADOWS_SANITIZE=ON
 softshadows_ctest build-sanitize "$@"

@@ -9,7 +9,8 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 cd "$(softshadows_root)"
 
-# numpy only for the tests' numeric checks.
-softshadows_install_packages "${SOFTSHADOWS_PACKAGES[@]}" python3-numpy assimp-testmodels
+# numpy for the tests' numeric checks, Debian's models for the importers, xdotool
+# to drive the viewer's window.
+softshadows_install_packages "${SOFTSHADOWS_PACKAGES[@]}" python3-numpy assimp-testmodels xdotool
 softshadows_build
 softshadows_ctest build "$@"

@@ -335,11 +335,11 @@ vtkSmartPointer<vtkRenderer> BuildRenderer(Scene& scene)
 
 //------------------------------------------------------------------------------
 vtkSmartPointer<vtkRenderWindow> MakeWindow(
-  vtkRenderer* renderer, const std::array<int, 2>& size, bool withAlpha)
+  vtkRenderer* renderer, const std::array<int, 2>& size, bool withAlpha, bool onScreen)
 {
   auto window = vtkSmartPointer<vtkRenderWindow>::New();
   window->SetDisplayId(SharedDisplay());
-  window->SetOffScreenRendering(1);
+  window->SetOffScreenRendering(onScreen ? 0 : 1);
   window->SetMultiSamples(0);
   window->SetAlphaBitPlanes(withAlpha ? 1 : 0);
   window->SetSize(size[0], size[1]);

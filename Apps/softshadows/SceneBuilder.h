@@ -30,13 +30,13 @@ namespace softshadows
 vtkSmartPointer<vtkRenderer> BuildRenderer(Scene& scene);
 
 /**
- * An off-screen window of `size` pixels showing `renderer`, without
+ * An off-screen window (on screen when `onScreen`) of `size` pixels showing `renderer`, without
  * multisampling (the shadow passes draw into their own framebuffers), with
  * an alpha channel when `withAlpha`. Throws std::runtime_error when there is
  * no X display or OpenGL context.
  */
 vtkSmartPointer<vtkRenderWindow> MakeWindow(
-  vtkRenderer* renderer, const std::array<int, 2>& size, bool withAlpha);
+  vtkRenderer* renderer, const std::array<int, 2>& size, bool withAlpha, bool onScreen = false);
 }
 
 #endif

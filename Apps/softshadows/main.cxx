@@ -12,6 +12,7 @@
 #include "SceneBuilder.h"
 #include "SceneFile.h"
 #include "Techniques.h"
+#include "Viewer.h"
 
 #include "vtkContactHardeningShadowPass.h"
 #include "vtkSilhouetteShadowPass.h"
@@ -41,6 +42,7 @@ const char* const Usage =
   softshadows techniques [--specs]
   softshadows render SCENE.json [--technique SPEC] [--size WxH] [--output FILE]
                      [--shadow-only] [--light I] [--debug-view] [--quiet]
+  softshadows view SCENE.json [--technique SPEC] [--size WxH]
   softshadows bench SCENE.json --techniques SPEC,SPEC,... [--size WxH] [--frames N] [--json]
                     [--quiet]
   softshadows gallery SCENE.json --techniques SPEC,SPEC,... --output-dir DIR
@@ -61,6 +63,9 @@ Long work shows its progress on stderr when it is a terminal; --quiet hides it.
                --shadow-only writes light I's visibility as grey + alpha;
                --debug-view marks umbra and penumbra (contact) or shows the
                signed distance map (silhouette)
+  view         the scene in a window with VTK's trackball camera; keys cycle
+               the techniques, size and move the lights, show the shadow
+               alone and save screenshots (h lists them)
   bench        time the techniques in one window, frames interleaved, the first
                light moving; `hard` is added if missing; --json prints one JSON
                object per technique and line
@@ -143,10 +148,10 @@ public:
   }
 
   /// Opens the window: `size`, or the scene's size when `size` is {0, 0}.
-  vtkRenderWindow* OpenWindow(const std::array<int, 2>& size, bool withAlpha)
+  vtkRenderWindow* OpenWindow(const std::array<int, 2>& size, bool withAlpha, bool onScreen = false)
   {
     this->Window =
-      MakeWindow(this->Renderer, size[0] > 0 ? size : this->Description.Size, withAlpha);
+      MakeWindow(this->Renderer, size[0] > 0 ? size : this->Description.Size, withAlpha, onScreen);
     return this->Window;
   }
 
@@ -370,6 +375,39 @@ int Gallery(const std::vector<std::string>& arguments)
   return 0;
 }
 
+int View(const std::vector<std::string>& arguments)
+{
+  CommandLine line("view", arguments, true, { "--technique", "--size" }, {});
+  std::vector<TechniqueSpec> specs;
+  for (const std::string& spec : AllTechniqueSpecs())
+  {
+    specs.push_back(ParseTechniqueSpec(spec, spec));
+  }
+  // The technique asked for (or the scene's) first shown, wherever it is
+  // in the cycle; one the cycle lacks (a default variant named) joins it.
+  const std::string asked = line.Has("--technique")
+    ? ParseTechniqueSpec(line.Value("--technique"), "--technique").ToString()
+    : std::string();
+  Session session(line, specs);
+  const std::string first = asked.empty() ? session.Description.Shadows.Technique : asked;
+  auto found = std::find_if(session.Techniques.begin(), session.Techniques.end(),
+    [&](const TechniqueInstance& technique) { return technique.Spec == first; });
+  if (found == session.Techniques.end())
+  {
+    const TechniqueSpec spec = ParseTechniqueSpec(first, "--technique");
+    session.Techniques.insert(session.Techniques.begin(),
+      CreateTechnique(spec, session.Description.Shadows.MapSize,
+        session.Description.Shadows.ParametersOf(spec.Name)));
+    found = session.Techniques.begin();
+  }
+  const auto index = static_cast<std::size_t>(found - session.Techniques.begin());
+  vtkRenderWindow* window = session.OpenWindow(line.Size(), false, true);
+  window->SetWindowName(("softshadows: " + session.Description.Name).c_str());
+  std::cout << ViewerKeys << std::flush;
+  RunViewer(session.Description, session.Renderer, window, session.Techniques, index);
+  return 0;
+}
+
 /// Light I of the scene (--light), checked against its lights.
 int LightOption(const CommandLine& line, const Scene& scene)
 {
@@ -503,12 +541,16 @@ int Run(const std::vector<std::string>& arguments)
   {
     return Truth(rest);
   }
+  if (command == "view")
+  {
+    return View(rest);
+  }
   if (command == "quality")
   {
     return Quality(rest);
   }
-  throw InputError(
-    command, "unknown command (known: techniques, render, bench, gallery, truth, quality, help)");
+  throw InputError(command,
+    "unknown command (known: techniques, render, view, bench, gallery, truth, quality, help)");
 }
 }
 
