@@ -69,6 +69,7 @@ set(softshadows_rendering_shaders
   vtkShadowPackFS
   vtkShadowScreenCommonFS
   vtkShadowSurfaceFS
+  vtkSilhouetteBandsGS
   vtkSilhouetteCommon
   vtkSilhouetteEdgesFS
   vtkSilhouetteEdgesVS

@@ -3,6 +3,7 @@
 #include "vtkShadowGeometry.h"
 
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -52,6 +53,16 @@ void vtkShadowGeometry::SetPrimitive(Primitive primitive)
 }
 
 //------------------------------------------------------------------------------
+void vtkShadowGeometry::SetHalfFloat(bool half)
+{
+  if (half != this->HalfFloat)
+  {
+    this->HalfFloat = half;
+    this->UploadTime = 0;
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkShadowGeometry::SetShaders(
   const std::string& vertex, const std::string& fragment, const std::string& geometry)
 {
@@ -84,7 +95,7 @@ void vtkShadowGeometry::Upload(vtkShaderProgram* program)
   if (!current)
   {
     this->Attributes.clear();
-    this->Vertices = 0;
+    this->Primitives = 0;
   }
   this->BoundProgram = nullptr;
   this->VAO->ShaderProgramChanged();
@@ -93,16 +104,28 @@ void vtkShadowGeometry::Upload(vtkShaderProgram* program)
     return;
   }
   this->UploadTime = this->Input->GetMTime();
-  auto bind = [this, program]()
+  const int divisor = this->Kind == Primitive::TriangleInstances ? 1 : 0;
+  auto bind = [this, program, divisor]()
   {
     this->VAO->Bind();
     for (const Attribute& a : this->Attributes)
     {
-      if (program->IsAttributeUsed(a.Name.c_str()))
+      if (!program->IsAttributeUsed(a.Name.c_str()))
       {
-        this->VAO->AddAttributeArray(program, a.Buffer, a.Name, 0, sizeof(float) * a.Components,
-          VTK_FLOAT, a.Components, false);
+        continue;
       }
+      const int bytes = a.Half ? 2 : 4;
+      this->VAO->AddAttributeArrayWithDivisor(program, a.Buffer, a.Name, 0, bytes * a.Components,
+        a.Half ? VTK_UNSIGNED_SHORT : VTK_FLOAT, a.Components, false, divisor, false);
+      const auto index = static_cast<GLuint>(program->FindAttributeArray(a.Name.c_str()));
+      if (a.Half)
+      {
+        // VTK knows no half floats: the same buffer (still bound), read as such.
+        glVertexAttribPointer(
+          index, a.Components, GL_HALF_FLOAT, GL_FALSE, bytes * a.Components, nullptr);
+      }
+      // VTK sets only divisors above 0; a primitive changed may leave one.
+      glVertexAttribDivisor(index, divisor);
     }
     this->VAO->Release();
     this->BoundProgram = program;
@@ -113,16 +136,21 @@ void vtkShadowGeometry::Upload(vtkShaderProgram* program)
     return;
   }
 
-  // The primitives' corners, in order: every attribute expanded alike.
+  // The primitives' corners and cells, in order: every attribute expanded
+  // alike (point data per corner, cell data per primitive).
   const bool lines = this->Kind == Primitive::LinesAdjacency;
-  const vtkIdType size = lines ? 4 : 3;
+  const vtkIdType size = this->CornersPerPrimitive();
   std::vector<vtkIdType> corners;
+  std::vector<vtkIdType> faces;
   vtkCellArray* cells = lines ? this->Input->GetLines() : this->Input->GetPolys();
+  // Cell ids run through vertices, lines, polygons and strips.
+  vtkIdType cellId =
+    this->Input->GetNumberOfVerts() + (lines ? 0 : this->Input->GetNumberOfLines());
   const vtkIdType numberOfPoints = this->Input->GetNumberOfPoints();
   vtkIdType n = 0;
   const vtkIdType* ids = nullptr;
   bool reported = current; // the skipped cells were reported at the first upload
-  for (cells->InitTraversal(); cells->GetNextCell(n, ids);)
+  for (cells->InitTraversal(); cells->GetNextCell(n, ids); ++cellId)
   {
     if (n != size)
     {
@@ -140,8 +168,10 @@ void vtkShadowGeometry::Upload(vtkShaderProgram* program)
       continue;
     }
     corners.insert(corners.end(), ids, ids + n);
+    faces.push_back(cellId);
   }
-  this->Vertices = static_cast<int>(corners.size());
+  this->Primitives = static_cast<int>(faces.size());
+  const std::vector<vtkIdType>& tuples = this->PerFace() ? faces : corners;
 
   // Attributes the shaders do not use are neither uploaded nor bound; those
   // another program of this geometry uploaded stay.
@@ -151,23 +181,36 @@ void vtkShadowGeometry::Upload(vtkShaderProgram* program)
     {
       continue;
     }
-    std::vector<float> values;
-    values.reserve(corners.size() * source.Components);
-    for (vtkIdType id : corners)
-    {
-      for (int c = 0; c < source.Components; ++c)
-      {
-        values.push_back(static_cast<float>(source.Array->GetComponent(id, source.First + c)));
-      }
-    }
     Attribute attribute;
     attribute.Name = source.Name;
     attribute.Components = source.Components;
+    attribute.Half = this->HalfFloat && source.Array->GetDataType() == VTK_UNSIGNED_SHORT;
     attribute.Buffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
     attribute.Buffer->SetType(vtkOpenGLBufferObject::ArrayBuffer);
-    if (!values.empty())
+    auto upload = [&](auto kind)
     {
-      attribute.Buffer->Upload(values, vtkOpenGLBufferObject::ArrayBuffer);
+      using Value = decltype(kind);
+      std::vector<Value> values;
+      values.reserve(tuples.size() * source.Components);
+      for (vtkIdType id : tuples)
+      {
+        for (int c = 0; c < source.Components; ++c)
+        {
+          values.push_back(static_cast<Value>(source.Array->GetComponent(id, source.First + c)));
+        }
+      }
+      if (!values.empty())
+      {
+        attribute.Buffer->Upload(values, vtkOpenGLBufferObject::ArrayBuffer);
+      }
+    };
+    if (attribute.Half)
+    {
+      upload(static_cast<unsigned short>(0)); // the bits as they are
+    }
+    else
+    {
+      upload(0.0f);
     }
     this->Attributes.push_back(attribute);
   }
@@ -178,14 +221,15 @@ void vtkShadowGeometry::Upload(vtkShaderProgram* program)
 std::vector<vtkShadowGeometry::Source> vtkShadowGeometry::GetSources() const
 {
   std::vector<Source> sources;
-  if (this->Input->GetPoints())
+  if (this->Input->GetPoints() && !this->PerFace())
   {
     sources.push_back({ "vtkShadowVertexMC", this->Input->GetPoints()->GetData(), 0, 3 });
   }
-  vtkPointData* pd = this->Input->GetPointData();
-  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+  vtkFieldData* data = this->PerFace() ? static_cast<vtkFieldData*>(this->Input->GetCellData())
+                                       : this->Input->GetPointData();
+  for (int a = 0; a < data->GetNumberOfArrays(); ++a)
   {
-    vtkDataArray* array = pd->GetArray(a);
+    vtkDataArray* array = data->GetArray(a);
     if (!array || !array->GetName())
     {
       continue;
@@ -225,10 +269,14 @@ bool vtkShadowGeometry::MissesAttributes(vtkShaderProgram* program) const
 //------------------------------------------------------------------------------
 vtkIdType vtkShadowGeometry::GetUploadedBytes() const
 {
+  // An attribute's values: one a corner, or one a face.
+  const vtkIdType count = this->PerFace()
+    ? this->Primitives
+    : static_cast<vtkIdType>(this->Primitives) * this->CornersPerPrimitive();
   vtkIdType bytes = 0;
   for (const Attribute& a : this->Attributes)
   {
-    bytes += static_cast<vtkIdType>(sizeof(float)) * a.Components * this->Vertices;
+    bytes += (a.Half ? 2 : 4) * a.Components * count;
   }
   return bytes;
 }
@@ -249,7 +297,7 @@ bool vtkShadowGeometry::Draw(vtkOpenGLRenderWindow* context, const glm::dmat4& w
     return false;
   }
   this->Upload(program);
-  if (this->Vertices == 0)
+  if (this->Primitives == 0)
   {
     return true;
   }
@@ -270,8 +318,21 @@ bool vtkShadowGeometry::Draw(vtkOpenGLRenderWindow* context, const glm::dmat4& w
     this->Uniforms(program);
   }
   this->VAO->Bind();
-  glDrawArrays(
-    this->Kind == Primitive::LinesAdjacency ? GL_LINES_ADJACENCY : GL_TRIANGLES, 0, this->Vertices);
+  switch (this->Kind)
+  {
+    case Primitive::Triangles:
+      glDrawArrays(GL_TRIANGLES, 0, 3 * this->Primitives);
+      break;
+    case Primitive::TriangleInstances:
+      glDrawArraysInstanced(GL_TRIANGLES, 0, 3, this->Primitives);
+      break;
+    case Primitive::TrianglePoints:
+      glDrawArrays(GL_POINTS, 0, this->Primitives);
+      break;
+    case Primitive::LinesAdjacency:
+      glDrawArrays(GL_LINES_ADJACENCY, 0, 4 * this->Primitives);
+      break;
+  }
   this->VAO->Release();
   return true;
 }

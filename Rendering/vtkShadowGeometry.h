@@ -14,8 +14,14 @@
  * they come (3 vertices each, no index buffer: a TAM's vertices are per face
  * anyway); with SetPrimitive(LinesAdjacency), the input's 4-point lines are
  * drawn as GL_LINES_ADJACENCY, for a geometry shader to build triangles from
- * (smoothies' silhouette edges). The data is uploaded on the first Draw()
- * after it changed, only the attributes the shaders use.
+ * (smoothies' silhouette edges). Data kept once per face (cell data, as
+ * vtkTopologyAwareMeshFilter::PerFaceAttributes writes it) is drawn with
+ * TriangleInstances (an instance of 3 corners a triangle, the cell data per
+ * instance, gl_VertexID the corner) or TrianglePoints (a point a triangle,
+ * for a geometry shader). With SetHalfFloat(), unsigned short arrays are
+ * IEEE binary16 bit patterns (vtkTopologyAwareMeshFilter::HalfPrecision),
+ * uploaded as they are and read as GL_HALF_FLOAT. The data is uploaded on
+ * the first Draw() after it changed, only the attributes the shaders use.
  *
  * The shaders are the technique's, each beginning with //VTK::System::Dec;
  * they declare what they use of `uniform mat4 vtkShadowModelToClip` (model
@@ -61,10 +67,14 @@ public:
   /// What the input's cells are drawn as.
   enum class Primitive
   {
-    Triangles,     ///< its 3-point polygons (default)
-    LinesAdjacency ///< its 4-point lines
+    Triangles,         ///< its 3-point polygons, point data per corner (default)
+    TriangleInstances, ///< its 3-point polygons, cell data per instance of 3 corners
+    TrianglePoints,    ///< a point per 3-point polygon, with its cell data
+    LinesAdjacency     ///< its 4-point lines, point data per end
   };
   void SetPrimitive(Primitive primitive);
+  /// Unsigned short arrays hold binary16 bits, read as GL_HALF_FLOAT. Default off.
+  void SetHalfFloat(bool half);
   void SetShaders(const std::string& vertex, const std::string& fragment,
     const std::string& geometry = std::string());
   /// `source` (a shader beginning with //VTK::System::Dec) with `prefix`
@@ -78,8 +88,12 @@ public:
     this->Uniforms = uniforms;
   }
 
-  /// Number of vertices drawn (3 a triangle, 4 a line with adjacency).
-  int GetNumberOfVertices() const { return this->Vertices; }
+  /// Number of vertices drawn (3 a triangle, 1 with TrianglePoints, 4 a line with adjacency).
+  int GetNumberOfVertices() const
+  {
+    return this->Kind == Primitive::TrianglePoints ? this->Primitives
+                                                   : this->Primitives * this->CornersPerPrimitive();
+  }
 
   /// Bytes of the vertex buffers on the GPU: the attributes the shaders use.
   vtkIdType GetUploadedBytes() const;
@@ -101,7 +115,13 @@ private:
     int First;
     int Components;
   };
+  /// Point data for Triangles and LinesAdjacency, cell data for the others.
   std::vector<Source> GetSources() const;
+  bool PerFace() const
+  {
+    return this->Kind == Primitive::TriangleInstances || this->Kind == Primitive::TrianglePoints;
+  }
+  int CornersPerPrimitive() const { return this->Kind == Primitive::LinesAdjacency ? 4 : 3; }
   bool HasAttribute(const std::string& name) const;
   void Upload(vtkShaderProgram* program);
   bool MissesAttributes(vtkShaderProgram* program) const;
@@ -110,13 +130,15 @@ private:
   {
     std::string Name;
     int Components = 0;
+    bool Half = false; ///< binary16 values, else float
     vtkSmartPointer<vtkOpenGLBufferObject> Buffer;
   };
   vtkSmartPointer<vtkPolyData> Input;
   Primitive Kind = Primitive::Triangles;
+  bool HalfFloat = false;
   vtkMTimeType UploadTime = 0;
   std::vector<Attribute> Attributes;
-  int Vertices = 0;
+  int Primitives = 0; ///< triangles or lines drawn
   std::string VertexShader, FragmentShader, GeometryShader;
   glm::dmat4 ModelToWorld{ 1.0 };
   std::function<void(vtkShaderProgram*)> Uniforms;

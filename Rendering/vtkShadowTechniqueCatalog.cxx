@@ -322,6 +322,20 @@ const std::vector<Technique>& Techniques()
         Bind<vtkSilhouetteShadowPass, int>("lookup_rows", Integer, Between(2, 1024),
           "soft: lookup texture rows, one penumbra width each",
           &vtkSilhouetteShadowPass::SetLookupRows, &vtkSilhouetteShadowPass::GetLookupRows),
+        Bind<vtkSilhouetteShadowPass, int>("silhouette_geometry", Integer, Between(0, 1),
+          "how pass 2 covers the thick silhouette: 1 a rectangle around each silhouette edge "
+          "(geometry shader), 0 each silhouette face grown about its incenter (the paper's eq. 2); "
+          "the same map",
+          &vtkSilhouetteShadowPass::SetSilhouetteGeometry,
+          &vtkSilhouetteShadowPass::GetSilhouetteGeometry),
+        Bind<vtkSilhouetteShadowPass, bool>("per_face_attributes", Boolean, Any(),
+          "topology aware meshes once a face (instanced), not once a corner: a third of the "
+          "memory (always so with silhouette_geometry 1)",
+          &vtkSilhouetteShadowPass::SetPerFaceAttributes,
+          &vtkSilhouetteShadowPass::GetPerFaceAttributes),
+        Bind<vtkSilhouetteShadowPass, bool>("half_precision", Boolean, Any(),
+          "topology aware meshes in 16-bit floats: half the memory, corners rounded",
+          &vtkSilhouetteShadowPass::SetHalfPrecision, &vtkSilhouetteShadowPass::GetHalfPrecision),
         Bind<vtkSilhouetteShadowPass, bool>("drop_non_silhouette_faces", Boolean, Any(),
           "for casters that do not change shape: leave faces that can never be on a silhouette "
           "out of their topology aware meshes",

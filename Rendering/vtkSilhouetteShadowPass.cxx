@@ -3,6 +3,7 @@
 #include "vtkSilhouetteShadowPass.h"
 
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -21,6 +22,7 @@
 #include "vtkTopologyAwareMeshFilter.h"
 #include "vtk_glew.h"
 
+#include "vtkSilhouetteBandsGS.h"
 #include "vtkSilhouetteCommon.h"
 #include "vtkSilhouetteEdgesFS.h"
 #include "vtkSilhouetteEdgesVS.h"
@@ -40,33 +42,54 @@ namespace
 constexpr double Diagonal = 1.4142135623730951; // a texel's diagonal, in texels
 constexpr float ClearDistance = -1.0e4f;        // no silhouette near: far outside
 
+// How a caster's TAM is laid out on the GPU.
+struct MeshLayout
+{
+  bool Drop = false;    ///< DropNonSilhouetteFaces
+  bool PerFace = false; ///< once a face (instances or points), not once a corner
+  bool Half = false;    ///< binary16 attributes
+
+  bool operator!=(const MeshLayout& other) const
+  {
+    return this->Drop != other.Drop || this->PerFace != other.PerFace || this->Half != other.Half;
+  }
+};
+
 // What the pass keeps of each caster's polydata.
 struct CasterMesh
 {
   vtkSmartPointer<vtkTopologyAwareMeshFilter> Filter;
   std::shared_ptr<vtkShadowGeometry> Geometry;
-  bool Dropped = false; ///< built with DropNonSilhouetteFaces
+  MeshLayout Layout;
 };
 
-// The TAM of a caster's polydata, and the geometry that draws it (shaders:
-// set per light, for 2D maps or cube faces).
-void BuildMesh(vtkPolyData* data, bool drop, CasterMesh& mesh)
+// The TAM of a caster's polydata, and the geometry that draws it (shaders
+// and primitive: set per light, for 2D maps or cube faces).
+void BuildMesh(vtkPolyData* data, const MeshLayout& layout, CasterMesh& mesh)
 {
   vtkSmartPointer<vtkPolyData> faces = vtkShadowCasterRegistry::MergedFaces(data);
   mesh.Filter = vtkSmartPointer<vtkTopologyAwareMeshFilter>::New();
   mesh.Filter->SetInputData(faces);
-  mesh.Filter->SetDropNonSilhouetteFaces(drop);
+  mesh.Filter->SetDropNonSilhouetteFaces(layout.Drop);
+  mesh.Filter->SetPerFaceAttributes(layout.PerFace);
+  mesh.Filter->SetHalfPrecision(layout.Half);
   mesh.Filter->Update();
-  // Only what the silhouette pass reads goes to the GPU.
+  // Only what the silhouette pass reads goes to the GPU: the face's corners
+  // and its neighbours' normals, a vertex's own corner being gl_VertexID.
   vtkPolyData* tam = mesh.Filter->GetOutput();
   auto buffer = vtkSmartPointer<vtkPolyData>::New();
   buffer->SetPoints(tam->GetPoints());
   buffer->SetPolys(tam->GetPolys());
-  buffer->GetPointData()->AddArray(tam->GetPointData()->GetArray("FacePositions"));
-  buffer->GetPointData()->AddArray(tam->GetPointData()->GetArray("AdjacentNormals"));
+  vtkFieldData* from =
+    layout.PerFace ? static_cast<vtkFieldData*>(tam->GetCellData()) : tam->GetPointData();
+  vtkFieldData* to =
+    layout.PerFace ? static_cast<vtkFieldData*>(buffer->GetCellData()) : buffer->GetPointData();
+  to->AddArray(from->GetArray("FacePositions"));
+  to->AddArray(from->GetArray("AdjacentNormals"));
   mesh.Geometry = vtkShadowGeometry::NewShared();
   mesh.Geometry->SetInput(buffer);
-  mesh.Dropped = drop;
+  mesh.Geometry->SetHalfFloat(layout.Half);
+  mesh.Layout = layout;
 }
 
 // The fraction of a disc of unit radius on the lit side of a straight edge
@@ -99,6 +122,15 @@ struct vtkSilhouetteShadowPass::Internals
     vtkSilhouetteEdgesVS, std::string("#define SILHOUETTE_CUBE_FACE\n") + vtkSilhouetteCommon);
   std::string CubeFaceFragmentShader =
     vtkShadowGeometry::WithPrefix(vtkSilhouetteEdgesFS, "#define SILHOUETTE_CUBE_FACE");
+  // The same, drawn as rectangles around edges (EdgeRectangles).
+  std::string BandsVertexShader = vtkShadowGeometry::WithPrefix(
+    vtkSilhouetteEdgesVS, std::string("#define SILHOUETTE_BANDS\n") + vtkSilhouetteCommon);
+  std::string CubeFaceBandsVertexShader = vtkShadowGeometry::WithPrefix(vtkSilhouetteEdgesVS,
+    std::string("#define SILHOUETTE_BANDS\n#define SILHOUETTE_CUBE_FACE\n") + vtkSilhouetteCommon);
+  std::string BandsFragmentShader =
+    vtkShadowGeometry::WithPrefix(vtkSilhouetteEdgesFS, "#define SILHOUETTE_BANDS");
+  std::string CubeFaceBandsFragmentShader = vtkShadowGeometry::WithPrefix(
+    vtkSilhouetteEdgesFS, "#define SILHOUETTE_BANDS\n#define SILHOUETTE_CUBE_FACE");
   bool SamplersReported = false;
   bool PackedReported = false;
 };
@@ -189,14 +221,21 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
     {
       continue;
     }
-    const bool drop = this->DropNonSilhouetteFaces;
+    MeshLayout layout;
+    layout.Drop = this->DropNonSilhouetteFaces;
+    layout.PerFace = this->PerFaceAttributes || this->SilhouetteGeometry == EdgeRectangles;
+    layout.Half = this->HalfPrecision;
     CasterMesh& mesh = this->Internal->Meshes.Get(
-      caster, [drop](vtkPolyData* data, CasterMesh& built) { BuildMesh(data, drop, built); });
-    if (mesh.Dropped != drop)
+      caster, [&layout](vtkPolyData* data, CasterMesh& built) { BuildMesh(data, layout, built); });
+    if (mesh.Layout != layout)
     {
-      BuildMesh(caster.Data, drop, mesh); // the option changed, not the data
+      BuildMesh(caster.Data, layout, mesh); // the options changed, not the data
     }
     mesh.Geometry->SetModelToWorld(caster.ModelToWorld);
+    mesh.Geometry->SetPrimitive(this->SilhouetteGeometry == EdgeRectangles
+        ? vtkShadowGeometry::Primitive::TrianglePoints
+        : (layout.PerFace ? vtkShadowGeometry::Primitive::TriangleInstances
+                          : vtkShadowGeometry::Primitive::Triangles));
     meshes.emplace_back(&caster, mesh.Geometry.get());
   }
   this->Internal->Meshes.Prune(*this->Casters);
@@ -314,9 +353,19 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
       const float lightMC[4] = { static_cast<float>(toLight.x), static_cast<float>(toLight.y),
         static_cast<float>(toLight.z), light.Directional ? 0.0f : 1.0f };
       vtkTextureObject* depthMap = light.Point ? nullptr : light.DepthMap.Get();
-      mesh.second->SetShaders(
-        light.Point ? this->Internal->CubeFaceVertexShader : this->Internal->VertexShader,
-        light.Point ? this->Internal->CubeFaceFragmentShader : this->Internal->FragmentShader);
+      const Internals& shaders = *this->Internal;
+      if (this->SilhouetteGeometry == EdgeRectangles)
+      {
+        mesh.second->SetShaders(
+          light.Point ? shaders.CubeFaceBandsVertexShader : shaders.BandsVertexShader,
+          light.Point ? shaders.CubeFaceFragmentShader : shaders.FragmentShader,
+          vtkSilhouetteBandsGS);
+      }
+      else
+      {
+        mesh.second->SetShaders(light.Point ? shaders.CubeFaceVertexShader : shaders.VertexShader,
+          light.Point ? shaders.CubeFaceFragmentShader : shaders.FragmentShader);
+      }
       mesh.second->SetUniforms(
         [lightMC, halfWidth, mapSize, depthMap, widestKept, range](vtkShaderProgram* program)
         {
@@ -469,6 +518,10 @@ void vtkSilhouetteShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SampleSpread: " << this->SampleSpread << "\n";
   os << indent << "LookupTexels: " << this->LookupTexels << "\n";
   os << indent << "LookupRows: " << this->LookupRows << "\n";
+  os << indent << "SilhouetteGeometry: "
+     << (this->SilhouetteGeometry == EdgeRectangles ? "EdgeRectangles" : "IncenterScaling") << "\n";
+  os << indent << "PerFaceAttributes: " << this->PerFaceAttributes << "\n";
+  os << indent << "HalfPrecision: " << this->HalfPrecision << "\n";
   os << indent << "DropNonSilhouetteFaces: " << this->DropNonSilhouetteFaces << "\n";
   os << indent << "DebugView: " << this->DebugView << "\n";
   os << indent << "MeasureSilhouettePass: " << this->MeasureSilhouettePass << "\n";

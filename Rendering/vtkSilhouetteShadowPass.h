@@ -128,6 +128,46 @@ public:
   vtkGetMacro(LookupRows, int);
   ///@}
 
+  enum SilhouetteGeometries
+  {
+    IncenterScaling = 0,
+    EdgeRectangles = 1
+  };
+
+  ///@{
+  /**
+   * How pass 2 covers the thick silhouette. IncenterScaling, the paper's
+   * (section 2.1.1): the vertex shader grows each silhouette face about its
+   * incenter by eq. 2, after repairing faces degenerate after projection.
+   * EdgeRectangles: a geometry shader draws a rectangle around each
+   * silhouette edge, w_sc from it on every side, from the TAM's per-face
+   * layout (one point a face). Both cover every point the fragment shader
+   * keeps, and write the same map; a thin or large face grown by eq. 2
+   * covers much more than its band. Default EdgeRectangles.
+   */
+  vtkSetClampMacro(SilhouetteGeometry, int, IncenterScaling, EdgeRectangles);
+  vtkGetMacro(SilhouetteGeometry, int);
+  void SetSilhouetteGeometryToIncenterScaling() { this->SetSilhouetteGeometry(IncenterScaling); }
+  void SetSilhouetteGeometryToEdgeRectangles() { this->SetSilhouetteGeometry(EdgeRectangles); }
+  ///@}
+
+  ///@{
+  /**
+   * The TAM's layout on the GPU (vtkTopologyAwareMeshFilter's options).
+   * PerFaceAttributes: the face's corners and neighbours' normals once a
+   * face, drawn as instances of 3 vertices (the paper's stream frequency;
+   * a third of the memory) instead of in each of its 3 vertices; always so
+   * with EdgeRectangles. HalfPrecision: as 16-bit floats (half the memory;
+   * corners rounded to 1/2048 of their size). Both default off.
+   */
+  vtkSetMacro(PerFaceAttributes, bool);
+  vtkGetMacro(PerFaceAttributes, bool);
+  vtkBooleanMacro(PerFaceAttributes, bool);
+  vtkSetMacro(HalfPrecision, bool);
+  vtkGetMacro(HalfPrecision, bool);
+  vtkBooleanMacro(HalfPrecision, bool);
+  ///@}
+
   ///@{
   /**
    * For casters whose data does not change shape: build their TAMs without
@@ -161,6 +201,7 @@ public:
   vtkGetMacro(SilhouettePassTime, double);
   vtkSetMacro(MeasureSilhouettePass, bool);
   vtkGetMacro(MeasureSilhouettePass, bool);
+  vtkBooleanMacro(MeasureSilhouettePass, bool);
   ///@}
 
   void ReleaseGraphicsResources(vtkWindow* w) override;
@@ -191,6 +232,9 @@ protected:
   double SampleSpread = 0.25;
   int LookupTexels = 256;
   int LookupRows = 32;
+  int SilhouetteGeometry = EdgeRectangles;
+  bool PerFaceAttributes = false;
+  bool HalfPrecision = false;
   bool DropNonSilhouetteFaces = false;
   bool DebugView = false;
   bool MeasureSilhouettePass = false;

@@ -104,6 +104,7 @@ std::vector<Timing> RunBenchmark(vtkRenderWindow* window, vtkRenderer* renderer,
   using Clock = std::chrono::steady_clock;
   std::vector<std::vector<double>> times(techniques.size());
   std::vector<std::vector<double>> cpu(techniques.size());
+  std::vector<std::vector<double>> pass(techniques.size());
   LightOrbit orbit(FirstLight(renderer));
   const double total = static_cast<double>((warmUp + frames) * techniques.size());
   for (int round = 0; round < warmUp + frames; ++round)
@@ -135,6 +136,10 @@ std::vector<Timing> RunBenchmark(vtkRenderWindow* window, vtkRenderer* renderer,
         {
           cpu[t].push_back(techniques[t].CpuTime());
         }
+        if (techniques[t].PassTime)
+        {
+          pass[t].push_back(techniques[t].PassTime());
+        }
       }
     }
   }
@@ -149,6 +154,7 @@ std::vector<Timing> RunBenchmark(vtkRenderWindow* window, vtkRenderer* renderer,
     timing.MeanMs = std::accumulate(times[t].begin(), times[t].end(), 0.0) / frames;
     timing.MedianMs = Median(times[t]);
     timing.CpuMedianMs = cpu[t].empty() ? -1.0 : Median(cpu[t]);
+    timing.PassMedianMs = pass[t].empty() ? -1.0 : Median(pass[t]);
     timing.MapSize = mapSize;
     timing.Size = { window->GetSize()[0], window->GetSize()[1] };
     hardMean = timing.Technique == "hard" ? timing.MeanMs : hardMean;
@@ -173,11 +179,18 @@ void PrintTimingTable(std::ostream& os, const std::vector<Timing>& timings)
      << first.MapSize << "^2, " << first.Frames << " frames each (light moving):\n";
   os << std::left << std::setw(22) << "technique" << std::right << std::setw(11) << "mean ms"
      << std::setw(11) << "median ms" << std::setw(10) << "x hard";
-  // The techniques' own CPU work (silhouette searches), where they report it.
-  if (std::any_of(timings.begin(), timings.end(),
-        [](const Timing& timing) { return timing.CpuMedianMs >= 0.0; }))
+  // The techniques' own CPU work (silhouette searches) and own light-space
+  // pass (the silhouette pass), as columns where any technique reports them.
+  std::vector<std::pair<double Timing::*, const char*>> columns;
+  for (const auto& column : { std::make_pair(&Timing::CpuMedianMs, "own CPU ms"),
+         std::make_pair(&Timing::PassMedianMs, "own pass ms") })
   {
-    os << std::setw(16) << "own CPU ms";
+    if (std::any_of(timings.begin(), timings.end(),
+          [&column](const Timing& timing) { return timing.*column.first >= 0.0; }))
+    {
+      columns.push_back(column);
+      os << std::setw(16) << column.second;
+    }
   }
   os << "\n";
   for (const Timing& timing : timings)
@@ -185,9 +198,17 @@ void PrintTimingTable(std::ostream& os, const std::vector<Timing>& timings)
     os << std::left << std::setw(22) << timing.Technique << std::right << std::fixed
        << std::setprecision(2) << std::setw(11) << timing.MeanMs << std::setw(11) << timing.MedianMs
        << std::setw(10) << timing.RatioToHard;
-    if (timing.CpuMedianMs >= 0.0)
+    for (const auto& column : columns)
     {
-      os << std::setw(16) << timing.CpuMedianMs;
+      os << std::setw(16);
+      if (timing.*column.first >= 0.0)
+      {
+        os << timing.*column.first;
+      }
+      else
+      {
+        os << "";
+      }
     }
     os << "\n";
   }
@@ -210,6 +231,10 @@ void PrintTimingJson(std::ostream& os, const std::vector<Timing>& timings)
     if (timing.CpuMedianMs >= 0.0)
     {
       line["cpu_median_ms"] = Round3(timing.CpuMedianMs);
+    }
+    if (timing.PassMedianMs >= 0.0)
+    {
+      line["pass_median_ms"] = Round3(timing.PassMedianMs);
     }
     os << line.dump() << "\n";
   }

@@ -27,8 +27,9 @@ struct Timing
   int Frames = 0;
   double MeanMs = 0.0;
   double MedianMs = 0.0;
-  double RatioToHard = 0.0;  ///< 0 when `hard` was not timed
-  double CpuMedianMs = -1.0; ///< the technique's own CPU work a frame; < 0: not reported
+  double RatioToHard = 0.0;   ///< 0 when `hard` was not timed
+  double CpuMedianMs = -1.0;  ///< the technique's own CPU work a frame; < 0: not reported
+  double PassMedianMs = -1.0; ///< its own light-space pass a frame; < 0: not reported
   int MapSize = 0;
   std::array<int, 2> Size{ 0, 0 };
 };

@@ -3,6 +3,7 @@
 #include "Techniques.h"
 
 #include "vtkShadowTechniqueCatalog.h"
+#include "vtkSilhouetteShadowPass.h"
 #include "vtkSmoothieShadowPass.h"
 #include "vtkSoftShadowPass.h"
 
@@ -115,6 +116,12 @@ Technique TechniqueOf(int technique)
     if (auto* smoothies = vtkSmoothieShadowPass::SafeDownCast(pass))
     {
       instance.CpuTime = [smoothies]() { return smoothies->GetSilhouetteTime(); };
+    }
+    if (auto* silhouette = vtkSilhouetteShadowPass::SafeDownCast(pass))
+    {
+      // glFinish() around pass 2, which the receivers wait for anyway.
+      silhouette->MeasureSilhouettePassOn();
+      instance.PassTime = [silhouette]() { return silhouette->GetSilhouettePassTime(); };
     }
     return instance;
   };

@@ -49,6 +49,9 @@ struct TechniqueInstance
   /// The technique's own CPU time in the last frame (ms), for techniques
   /// that report one (smoothies: silhouette search and edge lists).
   std::function<double()> CpuTime;
+  /// The wall time of the technique's own light-space pass in the last
+  /// frame (ms), for techniques that measure one (silhouette: pass 2).
+  std::function<double()> PassTime;
 };
 
 /// A technique parameter: how the scene spells it and how it reaches the pass.

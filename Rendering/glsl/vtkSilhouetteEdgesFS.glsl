@@ -10,7 +10,8 @@
 // light. (Depth first lets a silhouette nearer the light take texels that
 // lie closer to another, which wide soft-shadow bands make common: on a
 // fence, a picket's band covers its neighbours'.)
-// Uses: vtkSilhouetteEdgesVS.glsl (its outputs).
+// Uses: vtkSilhouetteEdgesVS.glsl or, with SILHOUETTE_BANDS,
+// vtkSilhouetteBandsGS.glsl (their outputs).
 
 flat in vec3 silhouetteCorner[3];
 flat in int silhouetteEdges;
@@ -34,7 +35,13 @@ void main()
   float depth = 1.0;
   float side = 0.0;
   bool corner = false;
+#ifdef SILHOUETTE_BANDS
+  // A rectangle around one edge (vtkSilhouetteBandsGS.glsl).
+  int first = silhouetteEdges == 1 ? 0 : (silhouetteEdges == 2 ? 1 : 2);
+  for (int k = first; k <= first; ++k)
+#else
   for (int k = 0; k < 3; ++k)
+#endif
   {
     if ((silhouetteEdges & (1 << k)) == 0)
     {

@@ -32,9 +32,18 @@ uniform float silhouetteWidest;
 uniform sampler2D silhouetteDepths;
 #endif
 
+#ifdef SILHOUETTE_BANDS
+// To the geometry shader (vtkSilhouetteBandsGS.glsl), once a face.
+out vec3 silhouetteFaceCorner0; // the face's corners: texel x, y and depth in [0, 1]
+out vec3 silhouetteFaceCorner1;
+out vec3 silhouetteFaceCorner2;
+flat out int silhouetteFaceEdges; // bit k: edge V(k)V(k+1) is a silhouette; 0: draw nothing
+out float silhouetteFaceReach; // this face's w_sc
+#else
 flat out vec3 silhouetteCorner[3]; // the face's corners: texel x, y and depth in [0, 1]
 flat out int silhouetteEdges;      // bit k: edge V(k)V(k+1) is a silhouette
 flat out float silhouetteReach;    // this face's w_sc
+#endif
 
 // Eq. 1: an edge is a silhouette when the face and its neighbour face the
 // light differently, both seen from the edge's midpoint (so that the two
@@ -49,11 +58,13 @@ bool silhouetteEdge(vec3 a, vec3 b, vec3 face, vec3 neighbour)
   return facing != (dot(neighbour, v) > 0.0) && (facing || border);
 }
 
-void main()
+// The face's silhouette edges (bits), its corners in texel space (x, y,
+// map depth) and its w_sc; false for a face through the light's eye plane.
+bool silhouetteFace(out int edges, out vec3 corners[3], out float reach)
 {
   vec3 p[3] = vec3[3](FacePositions0, FacePositions1, FacePositions2);
   vec3 face = cross(p[1] - p[0], p[2] - p[0]);
-  int edges = (silhouetteEdge(p[0], p[1], face, AdjacentNormals0) ? 1 : 0) |
+  edges = (silhouetteEdge(p[0], p[1], face, AdjacentNormals0) ? 1 : 0) |
     (silhouetteEdge(p[1], p[2], face, AdjacentNormals1) ? 2 : 0) |
     (silhouetteEdge(p[2], p[0], face, AdjacentNormals2) ? 4 : 0);
 
@@ -68,13 +79,12 @@ void main()
     vec3 ndc = clip.xyz / clip.w;
     nearest = min(nearest, range.z > 0.0 ? mix(range.x, range.y, 0.5 * ndc.z + 0.5) : clip.w);
     t[k] = (0.5 * ndc.xy + 0.5) * silhouetteMapSize;
-    silhouetteCorner[k] = vec3(t[k], 0.5 * ndc.z + 0.5);
+    corners[k] = vec3(t[k], 0.5 * ndc.z + 0.5);
   }
-  silhouetteEdges = edges;
   // Eq. 2's w_sc: the expected width's half plus a texel diagonal (the
   // expected width is twice the widest penumbra behind the face when sized
   // from the light: K (r - e) or K (1/e - 1/r) for the farthest receiver r).
-  float reach = silhouetteHalfWidth;
+  reach = silhouetteHalfWidth;
   if (range.w > 0.0)
   {
     // The farthest receiver: the far plane, or, with a 2D depth map, the
@@ -105,10 +115,38 @@ void main()
     float widest = range.z > 0.0 ? range.w * (r - e) : range.w * (1.0 / e - 1.0 / r);
     reach = min(max(widest, 1.0), silhouetteWidest) + 1.41421356;
   }
+  return !behind;
+}
+
+#ifdef SILHOUETTE_BANDS
+void main()
+{
+  vec3 corners[3];
+  int edges;
+  float reach;
+  bool drawn = silhouetteFace(edges, corners, reach);
+  silhouetteFaceCorner0 = corners[0];
+  silhouetteFaceCorner1 = corners[1];
+  silhouetteFaceCorner2 = corners[2];
+  silhouetteFaceEdges = drawn ? edges : 0;
+  silhouetteFaceReach = reach;
+  gl_Position = vec4(0.0, 0.0, 0.0, 1.0); // the geometry shader places the bands
+}
+#else
+void main()
+{
+  vec3 corners[3];
+  int edges;
+  float reach;
+  bool drawn = silhouetteFace(edges, corners, reach);
+  silhouetteCorner = corners;
+  silhouetteEdges = edges;
   silhouetteReach = reach;
-  // The corner this vertex is: the TAM's vertices come in face order.
+  vec2 t[3] = vec2[3](corners[0].xy, corners[1].xy, corners[2].xy);
+  // The corner this vertex is: the TAM's vertices (or an instance's) come
+  // in face order.
   int corner = gl_VertexID % 3;
-  if (edges == 0 || behind)
+  if (edges == 0 || !drawn)
   {
     // No silhouette (or a face through the light's eye plane): one point in
     // front of the near plane, rejected before rasterization.
@@ -154,3 +192,4 @@ void main()
   vec2 grown = incenter + f * (t[corner] - incenter);
   gl_Position = vec4(grown / silhouetteMapSize * 2.0 - 1.0, 0.0, 1.0);
 }
+#endif

@@ -100,3 +100,35 @@ ball_shadow = plain < 20
 st.check(ball_shadow.sum() > 100 and (image[ball_shadow] < 20).all(),
          "the ball's shadow is unchanged by the line and point casters (%d pixels)"
          % ball_shadow.sum())
+
+# Pass 2's geometry and the TAM's layouts on the GPU: rectangles around
+# silhouette edges (the default) and the paper's faces grown about their
+# incenters (eq. 2), once a corner or instanced once a face, write the same
+# map: the same picture. Half precision rounds the corners: nearly the same.
+# The TAM's bytes: 72 a corner, 72 a face, 36 a face in half precision.
+layouts = {}
+for name, geometry, per_face, half in (("incenter, per corner", 0, False, False),
+                                       ("incenter, per face", 0, True, False),
+                                       ("edge rectangles", 1, False, False),
+                                       ("edge rectangles, half", 1, False, True)):
+    window, _, shadows = st.api_ball(vtkSilhouetteShadowPass, light_radius=0.3)
+    shadows.SetSilhouetteGeometry(geometry)
+    shadows.SetPerFaceAttributes(per_face)
+    shadows.SetHalfPrecision(half)
+    window.Render()
+    layouts[name] = (st.grab_red(window).astype(int), shadows.GetTopologyAwareMeshBytes())
+reference, faces = layouts["incenter, per corner"][0], layouts["incenter, per corner"][1] // 216
+st.check(faces > 0 and layouts["incenter, per corner"][1] == 216 * faces,
+         "per corner: 72 bytes a corner (%d faces)" % faces)
+for name, bytes_a_face in (("incenter, per face", 72), ("edge rectangles", 72),
+                           ("edge rectangles, half", 36)):
+    image, uploaded = layouts[name]
+    st.check(uploaded == bytes_a_face * faces, "%s: %d bytes a face (%d)"
+             % (name, bytes_a_face, uploaded))
+    changed = np.abs(image - reference) > 2
+    if "half" in name:
+        st.check(changed.mean() < 0.002, "%s: nearly the same picture (%.4f of pixels differ)"
+                 % (name, changed.mean()))
+    else:
+        st.check(not changed.any(), "%s: the same picture as the paper's incenter scaling (%d "
+                 "pixels differ)" % (name, changed.sum()))
