@@ -240,11 +240,12 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
   }
   this->Internal->Meshes.Prune(*this->Casters);
 
-  const auto start = std::chrono::steady_clock::now();
+  // Pass 1 finished first: llvmpipe, for one, draws it only when flushed.
   if (this->MeasureSilhouettePass)
   {
     glFinish();
   }
+  const auto start = std::chrono::steady_clock::now();
   auto& bands = this->Internal->Bands;
   bands.resize(lights.size());
   for (size_t slot = 0; slot < lights.size(); ++slot)
@@ -358,7 +359,7 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
       {
         mesh.second->SetShaders(
           light.Point ? shaders.CubeFaceBandsVertexShader : shaders.BandsVertexShader,
-          light.Point ? shaders.CubeFaceFragmentShader : shaders.FragmentShader,
+          light.Point ? shaders.CubeFaceBandsFragmentShader : shaders.BandsFragmentShader,
           vtkSilhouetteBandsGS);
       }
       else

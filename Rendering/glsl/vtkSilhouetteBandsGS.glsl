@@ -22,10 +22,11 @@ in float silhouetteFaceReach[];
 
 uniform float silhouetteMapSize; // texels across the map
 
-// As vtkSilhouetteEdgesVS.glsl writes them for vtkSilhouetteEdgesFS.glsl,
-// with the one edge the rectangle is for.
-flat out vec3 silhouetteCorner[3];
-flat out int silhouetteEdges;
+// For vtkSilhouetteEdgesFS.glsl with SILHOUETTE_BANDS: the one edge the
+// rectangle is for, and the face's third corner.
+flat out vec3 silhouetteEdgeA;
+flat out vec3 silhouetteEdgeB;
+flat out vec3 silhouetteOpposite;
 flat out float silhouetteReach;
 
 void main()
@@ -47,8 +48,9 @@ void main()
     for (int j = 0; j < 4; ++j)
     {
       vec2 q = (j < 2 ? a - along : b + along) + (j % 2 == 0 ? -across : across);
-      silhouetteCorner = corners;
-      silhouetteEdges = 1 << k;
+      silhouetteEdgeA = corners[k];
+      silhouetteEdgeB = corners[(k + 1) % 3];
+      silhouetteOpposite = corners[(k + 2) % 3];
       silhouetteReach = reach;
       gl_Position = vec4(q / silhouetteMapSize * 2.0 - 1.0, 0.0, 1.0);
       EmitVertex();

@@ -13,8 +13,14 @@
 // Uses: vtkSilhouetteEdgesVS.glsl or, with SILHOUETTE_BANDS,
 // vtkSilhouetteBandsGS.glsl (their outputs).
 
+#ifdef SILHOUETTE_BANDS
+flat in vec3 silhouetteEdgeA; // the edge's ends and the face's third corner:
+flat in vec3 silhouetteEdgeB; // texel x, y and depth in [0, 1]
+flat in vec3 silhouetteOpposite;
+#else
 flat in vec3 silhouetteCorner[3];
 flat in int silhouetteEdges;
+#endif
 flat in float silhouetteReach; // this face's w_sc
 uniform float silhouetteHalfWidth;  // the widest w_sc, texels: the map's distance range
 #ifndef SILHOUETTE_CUBE_FACE
@@ -28,6 +34,28 @@ float silhouetteCross(vec2 a, vec2 b, vec2 p)
   return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
 }
 
+// Edge ab of a face whose third corner is c, seen from texel p: if nearer
+// than `nearest`, that distance, the depth of its nearest point, whether
+// that point is an end, and the side of the edge's line p is on (1 the
+// face's, -1 the other, 0 for a face seen edge-on).
+void silhouetteNearest(vec2 p, vec3 a, vec3 b, vec3 c, inout float nearest, inout float depth,
+  inout bool corner, inout float side)
+{
+  vec2 ab = b.xy - a.xy;
+  float t = dot(p - a.xy, ab) / max(dot(ab, ab), 1.0e-12);
+  float d = distance(p, a.xy + clamp(t, 0.0, 1.0) * ab);
+  if (d < nearest)
+  {
+    nearest = d;
+    depth = mix(a.z, b.z, clamp(t, 0.0, 1.0)); // depth is affine along a projected line
+    corner = t <= 0.0 || t >= 1.0;
+    // Inside is the side of the edge's line the face lies on: the face
+    // may be far narrower than the thick silhouette.
+    float face = silhouetteCross(a.xy, b.xy, c.xy);
+    side = abs(face) < 1.0e-6 ? 0.0 : (silhouetteCross(a.xy, b.xy, p) * face >= 0.0 ? 1.0 : -1.0);
+  }
+}
+
 void main()
 {
   vec2 p = gl_FragCoord.xy;
@@ -37,31 +65,18 @@ void main()
   bool corner = false;
 #ifdef SILHOUETTE_BANDS
   // A rectangle around one edge (vtkSilhouetteBandsGS.glsl).
-  int first = silhouetteEdges == 1 ? 0 : (silhouetteEdges == 2 ? 1 : 2);
-  for (int k = first; k <= first; ++k)
+  silhouetteNearest(p, silhouetteEdgeA, silhouetteEdgeB, silhouetteOpposite, nearest, depth,
+    corner, side);
 #else
   for (int k = 0; k < 3; ++k)
-#endif
   {
-    if ((silhouetteEdges & (1 << k)) == 0)
+    if ((silhouetteEdges & (1 << k)) != 0)
     {
-      continue;
-    }
-    vec3 a = silhouetteCorner[k], b = silhouetteCorner[(k + 1) % 3];
-    vec2 ab = b.xy - a.xy;
-    float t = dot(p - a.xy, ab) / max(dot(ab, ab), 1.0e-12);
-    float d = distance(p, a.xy + clamp(t, 0.0, 1.0) * ab);
-    if (d < nearest)
-    {
-      nearest = d;
-      depth = mix(a.z, b.z, clamp(t, 0.0, 1.0)); // depth is affine along a projected line
-      corner = t <= 0.0 || t >= 1.0;
-      // Inside is the side of the edge's line the face lies on: the face
-      // may be far narrower than the thick silhouette.
-      float face = silhouetteCross(a.xy, b.xy, silhouetteCorner[(k + 2) % 3].xy);
-      side = abs(face) < 1.0e-6 ? 0.0 : (silhouetteCross(a.xy, b.xy, p) * face >= 0.0 ? 1.0 : -1.0);
+      silhouetteNearest(p, silhouetteCorner[k], silhouetteCorner[(k + 1) % 3],
+        silhouetteCorner[(k + 2) % 3], nearest, depth, corner, side);
     }
   }
+#endif
   if (nearest > silhouetteReach)
   {
     discard; // outside the thick silhouette
