@@ -306,8 +306,7 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
       light.Textures[0]->SetMagnificationFilter(vtkTextureObject::Linear);
     }
     const int rows = soft ? this->LookupRows : 1;
-    // Point lights take one sample (vtkSilhouetteLookupFS.glsl): profiles unnarrowed.
-    const double spread = soft && !light.Point ? this->SampleSpread : 0.0;
+    const double spread = soft ? this->SampleSpread : 0.0;
     const std::vector<double> key = { static_cast<double>(this->LookupTexels),
       static_cast<double>(rows), band.HalfWidth, band.MaximumPenumbra, this->EdgeWidth, spread };
     if (!light.Textures[1] || band.LookupKey != key)

@@ -169,11 +169,32 @@ float silhouetteCubeVisibility(samplerCube distances, samplerCube silhouettes, s
   vec3 v = vtkShadowCubeDirection(
     center, positionWC, normalWC, vtkShadowCubeTexel, vtkShadowNormalBias, size);
   float reference = dot(v, v) * vtkShadowDistanceBias;
-  // One sample: the three outer ones of section 2.2.1 drew faint arcs
-  // beyond the penumbrae on cube faces (docs/architecture.md), not yet
-  // understood.
   float width;
-  return silhouetteCubeSample(distances, silhouettes, lookup, v, reference, i, soft, width);
+  float visibility =
+    silhouetteCubeSample(distances, silhouettes, lookup, v, reference, i, soft, width);
+  if (!soft)
+  {
+    return visibility;
+  }
+  // The three outer samples, on the point's cube face (a texel there is
+  // 2 / size of the axis distance), each where its direction meets the
+  // receiver's plane: compared at the point's own distance, a receiver
+  // seen at a slant would shadow itself there (arcs beyond penumbrae).
+  vec3 s, t;
+  float axis;
+  vtkShadowCubeFace(v, s, t, axis);
+  float reach = silhouetteSpread * width * 2.0 * axis / silhouetteMapSize;
+  float facing = dot(normalWC, v);
+  for (int k = 0; k < 3; ++k)
+  {
+    float unused;
+    vec3 around = v + reach * (silhouetteAround[k].x * s + silhouetteAround[k].y * t);
+    float along = dot(normalWC, around);
+    around *= along * facing > 1.0e-12 * dot(around, around) ? facing / along : 1.0;
+    visibility += silhouetteCubeSample(distances, silhouettes, lookup, around,
+      dot(around, around) * vtkShadowDistanceBias, i, soft, unused);
+  }
+  return 0.25 * visibility;
 }
 #endif
 
