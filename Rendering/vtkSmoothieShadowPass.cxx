@@ -360,6 +360,9 @@ struct vtkSmoothieShadowPass::Internals
   std::string FragmentShader = vtkSmoothieEdgesFS;
   std::string CubeFaceFragmentShader =
     vtkShadowGeometry::WithPrefix(vtkSmoothieEdgesFS, "#define SMOOTHIE_CUBE_FACE");
+  std::string GeometryShader = vtkSmoothieEdgesGS;
+  std::string CubeFaceGeometryShader =
+    vtkShadowGeometry::WithPrefix(vtkSmoothieEdgesGS, "#define SMOOTHIE_CUBE_FACE");
   bool PackedReported = false;
 };
 
@@ -541,7 +544,8 @@ bool vtkSmoothieShadowPass::RenderShadowMaps(const vtkRenderState* s)
         vtkShadowGeometry* geometry = entry.Geometry.get();
         if (this->BuildOnGPU)
         {
-          geometry->SetShaders(vtkSmoothieEdgesVS, fragment, vtkSmoothieEdgesGS);
+          geometry->SetShaders(vtkSmoothieEdgesVS, fragment,
+            light.Point ? this->Internal->CubeFaceGeometryShader : this->Internal->GeometryShader);
         }
         else
         {

@@ -31,6 +31,13 @@ uniform vec3 smoothieAxis;
 // (perspective) or of r - b (parallel); z: 1 if parallel; w: the widest t.
 uniform vec4 smoothieThickness;
 uniform float smoothieFar; // the frustum's far depth
+// The receivers (vtkSmoothieEdgesFS.glsl's): what lies behind an edge sizes
+// its smoothie.
+#ifdef SMOOTHIE_CUBE_FACE
+uniform samplerCube smoothieReceivers; // squared distances from the eye
+#else
+uniform sampler2D smoothieReceivers; // linear depths along the axis
+#endif
 
 out vec3 smoothieWorld;       // the fragment's world position
 flat out vec4 smoothieShape;  // edge: its line (d, d . a, 0); corner: (b, 0, 1)
@@ -41,19 +48,61 @@ vec2 screen(vec4 clip)
   return clip.xy / clip.w;
 }
 
-// The thickness at a silhouette vertex: fixed, or the outer penumbra a light
-// of the radius gives there over the farthest receiver (r infinitely far
-// behind a perspective blocker, at the far plane behind a parallel one).
-float thickness(vec3 world)
+// The thickness at a silhouette vertex `world`: fixed, or the outer
+// penumbra a light of the radius gives there over `ratio`, the least
+// blocker-to-receiver ratio behind it (0: a receiver infinitely far behind
+// a perspective blocker, the far plane behind a parallel one), as
+// vtkSmoothieEdgesFS.glsl's alpha' reaches 1.
+float thickness(vec3 world, float ratio)
 {
   if (smoothieThickness.x > 0.0)
   {
     return smoothieThickness.x;
   }
   float b = max(dot(world - smoothieEye, smoothieAxis), 1.0e-6);
-  float t = smoothieThickness.z > 0.0 ? smoothieThickness.y * max(smoothieFar - b, 0.0)
-                                      : smoothieThickness.y / b;
+  float t = smoothieThickness.z > 0.0
+    ? smoothieThickness.y * max(min(b / max(ratio, 1.0e-6), smoothieFar) - b, 0.0)
+    : smoothieThickness.y / b * (1.0 - ratio);
   return min(t, smoothieThickness.w);
+}
+
+// The blocker-to-receiver ratio of the receiver at screen point s (clip:
+// its silhouette vertex's, for depth), in the units the fragment shader
+// compares: axial depths, a cube face's distances from the eye; 0 where
+// nothing lies behind.
+float receiverRatio(vec4 clip, vec2 s, vec3 world)
+{
+#ifdef SMOOTHIE_CUBE_FACE
+  vec4 at = smoothieClipToWorld * vec4(s * clip.w, clip.z, clip.w);
+  float r = sqrt(textureLod(smoothieReceivers, at.xyz / at.w - smoothieEye, 0.0).r);
+  float b = distance(world, smoothieEye);
+#else
+  float r = textureLod(smoothieReceivers, 0.5 * s + 0.5, 0.0).r;
+  float b = dot(world - smoothieEye, smoothieAxis);
+#endif
+  return clamp(b / r, 0.0, 1.0);
+}
+
+// The least ratio behind the edge p -> q (clip cp, cq, world wp, wq) on its
+// side d: at its ends and middle, a third, two thirds and all of the widest
+// smoothie (the receiver infinitely far) out; the fragment shader's alpha'
+// reaches 1 within the thickness this gives wherever the receivers between
+// vary no more than these show.
+float leastRatio(vec4 cp, vec4 cq, vec3 wp, vec3 wq, vec2 d)
+{
+  float widest = max(thickness(wp, 0.0), thickness(wq, 0.0));
+  float least = 1.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    float f = 0.5 * float(k);
+    vec4 c = mix(cp, cq, f);
+    vec3 w = mix(wp, wq, f);
+    for (int j = 1; j <= 3; ++j)
+    {
+      least = min(least, receiverRatio(c, screen(c) + d * (widest * float(j) / 3.0), w));
+    }
+  }
+  return least;
 }
 
 // Figure 2a: the edge p -> q turned to the side its faces' summed normal n
@@ -118,10 +167,13 @@ void main()
   {
     return; // seen end-on: no smoothie edge
   }
-  float ta = thickness((vtkShadowModelToWorld * vec4(a, 1.0)).xyz);
-  float tb = thickness((vtkShadowModelToWorld * vec4(b, 1.0)).xyz);
-
   vec2 d1 = extrusion(a, b, smoothieNormal[0].xyz, ca, cb);
+  vec3 wa = (vtkShadowModelToWorld * vec4(a, 1.0)).xyz;
+  vec3 wb = (vtkShadowModelToWorld * vec4(b, 1.0)).xyz;
+  float ratio = smoothieThickness.x > 0.0 ? 0.0 : leastRatio(ca, cb, wa, wb, d1);
+  float ta = thickness(wa, ratio);
+  float tb = thickness(wb, ratio);
+
   vec4 line = vec4(d1, dot(d1, sa), 0.0);
   emit(ca, vec2(0.0), line, ta);
   emit(cb, vec2(0.0), line, tb);
