@@ -167,7 +167,10 @@ void vtkShadowGeometry::Upload(vtkShaderProgram* program)
       }
       continue;
     }
-    corners.insert(corners.end(), ids, ids + n);
+    if (!this->PerFace())
+    {
+      corners.insert(corners.end(), ids, ids + n);
+    }
     faces.push_back(cellId);
   }
   this->Primitives = static_cast<int>(faces.size());

@@ -114,23 +114,24 @@ struct vtkSilhouetteShadowPass::Internals
   };
   std::vector<Band> Bands;
   vtkShadowCasterCache<CasterMesh> Meshes;
-  // Pass 2's shaders, for 2D maps and for cube faces (no 2D depth map to read).
-  std::string VertexShader =
-    vtkShadowGeometry::WithPrefix(vtkSilhouetteEdgesVS, vtkSilhouetteCommon);
-  std::string FragmentShader = vtkSilhouetteEdgesFS;
-  std::string CubeFaceVertexShader = vtkShadowGeometry::WithPrefix(
-    vtkSilhouetteEdgesVS, std::string("#define SILHOUETTE_CUBE_FACE\n") + vtkSilhouetteCommon);
-  std::string CubeFaceFragmentShader =
-    vtkShadowGeometry::WithPrefix(vtkSilhouetteEdgesFS, "#define SILHOUETTE_CUBE_FACE");
-  // The same, drawn as rectangles around edges (EdgeRectangles).
-  std::string BandsVertexShader = vtkShadowGeometry::WithPrefix(
-    vtkSilhouetteEdgesVS, std::string("#define SILHOUETTE_BANDS\n") + vtkSilhouetteCommon);
-  std::string CubeFaceBandsVertexShader = vtkShadowGeometry::WithPrefix(vtkSilhouetteEdgesVS,
-    std::string("#define SILHOUETTE_BANDS\n#define SILHOUETTE_CUBE_FACE\n") + vtkSilhouetteCommon);
-  std::string BandsFragmentShader =
-    vtkShadowGeometry::WithPrefix(vtkSilhouetteEdgesFS, "#define SILHOUETTE_BANDS");
-  std::string CubeFaceBandsFragmentShader = vtkShadowGeometry::WithPrefix(
-    vtkSilhouetteEdgesFS, "#define SILHOUETTE_BANDS\n#define SILHOUETTE_CUBE_FACE");
+  // Pass 2's shaders, [rectangles around edges][a cube face (no 2D depth
+  // map to read)]: the vertex shader's with the common depths.
+  std::array<std::array<std::string, 2>, 2> VertexShaders, FragmentShaders;
+  Internals()
+  {
+    for (int bands = 0; bands < 2; ++bands)
+    {
+      for (int cube = 0; cube < 2; ++cube)
+      {
+        const std::string defines = std::string(bands ? "#define SILHOUETTE_BANDS\n" : "") +
+          (cube ? "#define SILHOUETTE_CUBE_FACE\n" : "");
+        this->VertexShaders[bands][cube] =
+          vtkShadowGeometry::WithPrefix(vtkSilhouetteEdgesVS, defines + vtkSilhouetteCommon);
+        this->FragmentShaders[bands][cube] =
+          vtkShadowGeometry::WithPrefix(vtkSilhouetteEdgesFS, defines);
+      }
+    }
+  }
   bool SamplersReported = false;
   bool PackedReported = false;
 };
@@ -353,19 +354,9 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
       const float lightMC[4] = { static_cast<float>(toLight.x), static_cast<float>(toLight.y),
         static_cast<float>(toLight.z), light.Directional ? 0.0f : 1.0f };
       vtkTextureObject* depthMap = light.Point ? nullptr : light.DepthMap.Get();
-      const Internals& shaders = *this->Internal;
-      if (this->SilhouetteGeometry == EdgeRectangles)
-      {
-        mesh.second->SetShaders(
-          light.Point ? shaders.CubeFaceBandsVertexShader : shaders.BandsVertexShader,
-          light.Point ? shaders.CubeFaceBandsFragmentShader : shaders.BandsFragmentShader,
-          vtkSilhouetteBandsGS);
-      }
-      else
-      {
-        mesh.second->SetShaders(light.Point ? shaders.CubeFaceVertexShader : shaders.VertexShader,
-          light.Point ? shaders.CubeFaceFragmentShader : shaders.FragmentShader);
-      }
+      const bool bands = this->SilhouetteGeometry == EdgeRectangles;
+      mesh.second->SetShaders(this->Internal->VertexShaders[bands][light.Point],
+        this->Internal->FragmentShaders[bands][light.Point], bands ? vtkSilhouetteBandsGS : "");
       mesh.second->SetUniforms(
         [lightMC, halfWidth, mapSize, depthMap, widestKept, range](vtkShaderProgram* program)
         {
