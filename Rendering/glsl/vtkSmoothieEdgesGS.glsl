@@ -66,19 +66,26 @@ float thickness(vec3 world, float ratio)
   return min(t, smoothieThickness.w);
 }
 
-// The blocker-to-receiver ratio of the receiver at screen point s (clip:
-// its silhouette vertex's, for depth), in the units the fragment shader
-// compares: axial depths, a cube face's distances from the eye; 0 where
-// nothing lies behind.
-float receiverRatio(vec4 clip, vec2 s, vec3 world)
+// The blocker's depth at silhouette point `world` in the units the
+// fragment shader compares: axial, or a cube face's distance from the eye.
+float blockerDepth(vec3 world)
+{
+#ifdef SMOOTHIE_CUBE_FACE
+  return distance(world, smoothieEye);
+#else
+  return dot(world - smoothieEye, smoothieAxis);
+#endif
+}
+
+// The ratio of blocker depth b to the receiver's at screen point s (clip:
+// the silhouette point's, for depth); 0 where nothing lies behind.
+float receiverRatio(vec4 clip, vec2 s, float b)
 {
 #ifdef SMOOTHIE_CUBE_FACE
   vec4 at = smoothieClipToWorld * vec4(s * clip.w, clip.z, clip.w);
   float r = sqrt(textureLod(smoothieReceivers, at.xyz / at.w - smoothieEye, 0.0).r);
-  float b = distance(world, smoothieEye);
 #else
   float r = textureLod(smoothieReceivers, 0.5 * s + 0.5, 0.0).r;
-  float b = dot(world - smoothieEye, smoothieAxis);
 #endif
   return clamp(b / r, 0.0, 1.0);
 }
@@ -96,10 +103,10 @@ float leastRatio(vec4 cp, vec4 cq, vec3 wp, vec3 wq, vec2 d)
   {
     float f = 0.5 * float(k);
     vec4 c = mix(cp, cq, f);
-    vec3 w = mix(wp, wq, f);
+    float b = blockerDepth(mix(wp, wq, f));
     for (int j = 1; j <= 3; ++j)
     {
-      least = min(least, receiverRatio(c, screen(c) + d * (widest * float(j) / 3.0), w));
+      least = min(least, receiverRatio(c, screen(c) + d * (widest * float(j) / 3.0), b));
     }
   }
   return least;
