@@ -457,9 +457,12 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
   // writes every pixel's, and each multi-pass blur those of the pixels it
   // draws, so that a pixel's last pass leaves its final code there without
   // a pass of its own. The other variants' last pass writes them all, as
-  // does the debug view's, so there the chain writes none.
+  // does the debug view's, so there the chain writes none. PCF blurs in one
+  // pass, drawn like a multi-pass blur only where D > 0: a software
+  // rasterizer skips the blocks the depth test empties (most of the screen),
+  // where a branch would still run the kernel's first tap.
   vtkTextureObject* packed = screen->GetPacked(slot);
-  const bool chainCodes = this->Variant == MultiPass && !this->DebugView;
+  const bool chainCodes = this->Variant != Gaussian && !this->DebugView;
   const std::array<vtkTextureObject*, 2> pair = { filtered, distance };
   // A chain target, and the receivers' codes alongside when the chain writes them.
   auto chainTargets = [&](vtkTextureObject* target)
@@ -578,9 +581,19 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
   }
   else
   {
-    toPacked(in.PCF, filtered,
-      [&](vtkShaderProgram* program)
-      { program->SetUniformi("contactMaximumKernel", this->MaximumKernelSize); });
+    auto uniforms = [&](vtkShaderProgram* program)
+    { program->SetUniformi("contactMaximumKernel", this->MaximumKernelSize); };
+    if (chainCodes)
+    {
+      screen->BindTargets({ packed }, mask);
+      in.Draw(screen, in.PCF, filtered, uniforms, tolerance, this->DebugView,
+        vtkShadowScreenBuffers::QuadMask::Test, 1.0f);
+      screen->UnbindTargets();
+    }
+    else
+    {
+      toPacked(in.PCF, filtered, uniforms);
+    }
   }
   state->PopFramebufferBindings();
 }
