@@ -197,7 +197,7 @@ public:
    * of the penumbra's width on their surface. On the `grazing` quality
    * scene RMSE against the ray-cast truth drops from 0.85 to 0.62 of
    * `hard`'s; on a software rasterizer every fragment pays about one tap
-   * even where nothing is refined (the demo: 1.75 instead of 1.55 times
+   * even where nothing is refined (the demo: 1.69 instead of 1.50 times
    * `hard`'s instructions), on hardware only the refined ones do. Default
    * off.
    */
