@@ -471,11 +471,15 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
                       : std::vector<vtkTextureObject*>{ target };
   };
 
+  // Over every pixel, or (`masked`) only where the prepare pass found D > 0,
+  // the chain having written the other pixels' codes.
   auto toPacked = [&](std::unique_ptr<vtkOpenGLQuadHelper>& quad, vtkTextureObject* input,
-                    const std::function<void(vtkShaderProgram*)>& uniforms)
+                    const std::function<void(vtkShaderProgram*)>& uniforms, bool masked = false)
   {
-    screen->BindTargets({ packed });
-    in.Draw(screen, quad, input, uniforms, tolerance, this->DebugView);
+    screen->BindTargets({ packed }, masked ? mask : nullptr);
+    in.Draw(screen, quad, input, uniforms, tolerance, this->DebugView,
+      masked ? vtkShadowScreenBuffers::QuadMask::Test : vtkShadowScreenBuffers::QuadMask::None,
+      1.0f);
     screen->UnbindTargets();
   };
 
@@ -581,19 +585,11 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
   }
   else
   {
-    auto uniforms = [&](vtkShaderProgram* program)
-    { program->SetUniformi("contactMaximumKernel", this->MaximumKernelSize); };
-    if (chainCodes)
-    {
-      screen->BindTargets({ packed }, mask);
-      in.Draw(screen, in.PCF, filtered, uniforms, tolerance, this->DebugView,
-        vtkShadowScreenBuffers::QuadMask::Test, 1.0f);
-      screen->UnbindTargets();
-    }
-    else
-    {
-      toPacked(in.PCF, filtered, uniforms);
-    }
+    toPacked(
+      in.PCF, filtered,
+      [&](vtkShaderProgram* program)
+      { program->SetUniformi("contactMaximumKernel", this->MaximumKernelSize); },
+      chainCodes);
   }
   state->PopFramebufferBindings();
 }
