@@ -1,18 +1,19 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
 # SPDX-License-Identifier: BSD-3-Clause
 # shellcheck shell=bash
-# Shared by scripts/*.sh: the Debian 12 packages the project needs and a
+# Shared by scripts/*.sh: the Debian packages the project needs and a
 # function that installs the missing ones. Source it; it changes nothing by
 # itself.
 
-# Build tools, VTK 9.1 (C++ and Python), GLM, OpenMesh, JSON, and an X server
-# without a screen for rendering.
+# Build tools, VTK (C++ and Python), GLM, OpenMesh, JSON, Embree, and an X
+# server without a screen with Mesa's drivers for rendering. The names are
+# the same on Debian 12, 13 and unstable (VTK 9.1, 9.3, 9.6; Embree 3, 4, 4).
 # shellcheck disable=SC2034 # read by the scripts that source this file
 SOFTSHADOWS_PACKAGES=(
   cmake g++ make
   libvtk9-dev python3-vtk9
   libglm-dev libopenmesh-dev nlohmann-json3-dev libembree-dev
-  xvfb xauth
+  xvfb xauth libgl1-mesa-dri
 )
 
 # The repository's root folder, wherever the caller runs from.
@@ -49,25 +50,32 @@ softshadows_install_packages() {
   "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y "${missing[@]}"
 }
 
-# Configures FOLDER (default build/; Release and the cmake options given after
+# The build folder NAME (default build) of the checkout, e.g. build-paraview.
+# Inside a root of another release made by scripts/debian.sh, the folder
+# carries the release's name (build-trixie, build-paraview-trixie), so that
+# each release keeps its own builds beside the host's.
+softshadows_build_dir() {
+  echo "$(softshadows_root)/${1:-build}${SOFTSHADOWS_BUILD_SUFFIX:-}"
+}
+
+# Configures FOLDER (default build; Release and the cmake options given after
 # it) unless it is configured already, then builds it, e.g.
 #   softshadows_build build-sanitize -DSOFTSHADOWS_SANITIZE=ON
 softshadows_build() {
-  local root build
-  root=$(softshadows_root)
-  build="$root/${1:-build}"
+  local build
+  build=$(softshadows_build_dir "${1:-build}")
   shift || true
   if [ ! -f "$build/CMakeCache.txt" ]; then
-    cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release "$@"
+    cmake -S "$(softshadows_root)" -B "$build" -DCMAKE_BUILD_TYPE=Release "$@"
   fi
   cmake --build "$build" -j2
 }
 
-# Runs ctest in FOLDER (default build/) under a virtual X server, with any
+# Runs ctest in FOLDER (default build) under a virtual X server, with any
 # further ctest arguments.
 softshadows_ctest() {
   local build
-  build="$(softshadows_root)/${1:-build}"
+  build=$(softshadows_build_dir "${1:-build}")
   shift || true
   # -noreset: Xvfb would otherwise reset whenever its last client leaves and
   # refuse the next test's connection for a moment.

@@ -31,7 +31,7 @@ count() {
   local out
   out=$(mktemp)
   xvfb-run -a valgrind --tool=callgrind --callgrind-out-file="$out" \
-    build/bin/softshadows bench "$scene" --techniques "$1" --size "$size" --frames "$2" \
+    "$(softshadows_build_dir)/bin/softshadows" bench "$scene" --techniques "$1" --size "$size" --frames "$2" \
     >/dev/null 2>&1
   callgrind_annotate "$out" | awk '/PROGRAM TOTALS/ { gsub(",", "", $1); print $1 }'
   rm -f "$out"

@@ -13,6 +13,7 @@ cd "$(softshadows_root)"
 softshadows_install_packages "${SOFTSHADOWS_PACKAGES[@]}"
 softshadows_build
 
-techniques=$(build/bin/softshadows techniques --specs | paste -sd, -)
-xvfb-run -a build/bin/softshadows gallery Examples/Scenes/demo.json \
+softshadows=$(softshadows_build_dir)/bin/softshadows
+techniques=$("$softshadows" techniques --specs | paste -sd, -)
+xvfb-run -a "$softshadows" gallery Examples/Scenes/demo.json \
   --techniques "$techniques" --output-dir out

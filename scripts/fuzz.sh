@@ -22,7 +22,7 @@ fi
 shift || true
 
 softshadows_install_packages "${SOFTSHADOWS_PACKAGES[@]}" clang-14 libclang-rt-14-dev
-build="$root/build-fuzz"
+build=$(softshadows_build_dir build-fuzz)
 if [ ! -f "$build/CMakeCache.txt" ]; then
   # No tests: only the fuzz targets and what they link are configured.
   CC=clang-14 CXX=clang++-14 cmake -S "$root" -B "$build" \

@@ -18,4 +18,4 @@ softshadows_install_packages "${SOFTSHADOWS_PACKAGES[@]}" python3-numpy python3-
 softshadows_build
 
 xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" \
-  /usr/bin/python3 scripts/quality.py build/bin/softshadows "$@"
+  /usr/bin/python3 scripts/quality.py "$(softshadows_build_dir)/bin/softshadows" "$@"
