@@ -16,6 +16,14 @@ SOFTSHADOWS_PACKAGES=(
   xvfb xauth libgl1-mesa-dri
 )
 
+# What the tests use besides: numpy for their numeric checks, Debian's
+# models for the importers, xdotool to drive the viewer's window, and
+# PyVista, which Debian has from 13 on.
+SOFTSHADOWS_TEST_PACKAGES=(python3-numpy assimp-testmodels xdotool)
+if [ "$(. /etc/os-release && echo "${VERSION_CODENAME:-}")" != bookworm ]; then
+  SOFTSHADOWS_TEST_PACKAGES+=(python3-pyvista)
+fi
+
 # The repository's root folder, wherever the caller runs from.
 softshadows_root() {
   (cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -65,7 +73,8 @@ softshadows_build() {
   local build
   build=$(softshadows_build_dir "${1:-build}")
   shift || true
-  if [ ! -f "$build/CMakeCache.txt" ]; then
+  # (A configure that failed leaves a cache but no Makefile.)
+  if [ ! -f "$build/CMakeCache.txt" ] || [ ! -f "$build/Makefile" ]; then
     cmake -S "$(softshadows_root)" -B "$build" -DCMAKE_BUILD_TYPE=Release "$@"
   fi
   cmake --build "$build" -j2

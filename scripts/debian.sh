@@ -10,8 +10,9 @@
 # get the release's name (build-trixie/, build-paraview-trixie/...), so that
 # the releases' builds sit side by side in the checkout. Mounts /proc, /sys,
 # /dev, /dev/pts, /dev/shm and the host's /tmp (so that virtual X servers of
-# the host and of roots pick different displays), and unmounts everything it
-# mounted when it ends, also on failure or Ctrl-C. As root only.
+# the host and of roots pick different displays) in a mount namespace of its
+# own, and unmounts everything it mounted when it ends, also on failure or
+# Ctrl-C. Several runs may use one root at once. As root only.
 #   bash scripts/debian.sh RELEASE [COMMAND...]   (default: an interactive shell)
 set -euo pipefail
 
@@ -33,6 +34,14 @@ if [ "$(id -u)" -ne 0 ]; then
 fi
 [ $# -ge 1 ] || set -- bash
 
+# The mounts are made in a mount namespace of this run's own: the host and
+# other runs in the same root do not see them, and they go with the run
+# even if it is killed.
+if [ -z "${SOFTSHADOWS_DEBIAN_NAMESPACE:-}" ]; then
+  SOFTSHADOWS_DEBIAN_NAMESPACE=1 exec unshare --mount --propagation private -- \
+    bash "${BASH_SOURCE[0]}" "$release" "$@"
+fi
+
 checkout=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 roots=${SOFTSHADOWS_ROOTS:-/var/lib/softshadows/roots}
 mkdir -p "$roots"
@@ -44,10 +53,13 @@ mounted=()
 # root (a virtual X server, an MPI daemon) are ended first, since they would
 # keep their mounts busy.
 cleanup() {
-  local status=$? pid i killed=0
+  local status=$? pid i killed=0 namespace
   trap - EXIT INT TERM HUP
+  namespace=$(readlink /proc/self/ns/mnt)
   for pid in /proc/[0-9]*; do
-    if [ "$(readlink "$pid/root" 2>/dev/null)" = "$target" ]; then
+    # This run's own: in the root and in this run's mount namespace.
+    if [ "$(readlink "$pid/root" 2>/dev/null)" = "$target" ] &&
+      [ "$(readlink "$pid/ns/mnt" 2>/dev/null)" = "$namespace" ]; then
       kill "${pid#/proc/}" 2>/dev/null && killed=1
     fi
   done

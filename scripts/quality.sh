@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
 # SPDX-License-Identifier: BSD-3-Clause
-# Quality against physics, unattended on a fresh Debian 12 (as root):
+# Quality against physics, unattended on a fresh Debian 12, 13 or unstable (as root):
 # installs what is missing, builds, and measures every technique on every
 # scene of Examples/Scenes/quality against the ray-cast truth. Prints the
 # table and rewrites docs/quality.md's table, its pictures
