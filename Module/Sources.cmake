@@ -15,4 +15,5 @@ set(softshadows_filters_private_classes
   vtkSoftShadowsNormalConeTree
   vtkSoftShadowsTriangleMesh)
 set(softshadows_filters_private_headers
-  vtkSoftShadowsLargeBuffers.h)
+  vtkSoftShadowsLargeBuffers.h
+  vtkSoftShadowsVTKVersion.h)

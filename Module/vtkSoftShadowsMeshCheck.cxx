@@ -11,6 +11,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
+#include "vtkSoftShadowsVTKVersion.h"
 
 #include <algorithm> // for std::upper_bound
 #include <atomic>    // for std::atomic
@@ -204,11 +205,11 @@ std::string vtkSoftShadowsMeshCheck::FindProblem(vtkPolyData* mesh, bool cellSiz
   vtkIdType firstCellId = 0;
   for (int k = 0; k < 4; ++k)
   {
-    vtkCellArray* cells = arrays[k];
-    if (!cells)
+    if (!arrays[k])
     {
       continue;
     }
+    const auto cells = vtkSoftShadowsVTKVersion::VisitableCells(arrays[k]);
     std::string problem;
     cells->Visit(CheckCells{}, numPoints, firstCellId, CellKinds[k],
       cellSizes ? MinimumCellSizes[k] : 0, problem);

@@ -13,6 +13,7 @@
 #include "vtkPolygon.h"
 #include "vtkSMPTools.h"
 #include "vtkSoftShadowsMeshCheck.h"
+#include "vtkSoftShadowsVTKVersion.h"
 
 #include <algorithm> // for std::max, std::swap
 #include <atomic>    // for std::atomic
@@ -77,11 +78,14 @@ public:
       newell[1] += (p[2] - q[2]) * (p[0] + q[0]);
       newell[2] += (p[0] - q[0]) * (p[1] + q[1]);
     }
-    if (this->Polygon->Triangulate(this->Tris) && this->Tris->GetNumberOfIds() == 3 * (n - 2))
+    // Ear cutting, as vtkPolygon::Triangulate(vtkIdList*) does in the VTK
+    // releases that have it (9.6 has not; this call is in every release).
+    if (this->Polygon->EarCutTriangulation(this->Tris) &&
+      this->Tris->GetNumberOfIds() == 3 * (n - 2))
     {
       for (vtkIdType t = 0; t < n - 2; ++t)
       {
-        // Triangulate() gives indices into the polygon's own point list.
+        // Ear cutting gives indices into the polygon's own point list.
         vtkIdType a = ids[this->Tris->GetId(3 * t)];
         vtkIdType b = ids[this->Tris->GetId(3 * t + 1)];
         vtkIdType c = ids[this->Tris->GetId(3 * t + 2)];
@@ -276,8 +280,8 @@ bool ExtractTriangles(vtkPolyData* input, vtkAlgorithm* filter, TriangleMesh& me
   }
 
   // Faces: vtkPolyData numbers its cells verts, lines, polys, then strips.
-  vtkCellArray* polys = input->GetPolys();
-  vtkCellArray* strips = input->GetStrips();
+  const auto polys = vtkSoftShadowsVTKVersion::VisitableCells(input->GetPolys());
+  const auto strips = vtkSoftShadowsVTKVersion::VisitableCells(input->GetStrips());
   mesh.FirstCellId = numVerts + numLines;
   if (numStrips > 0 || !polys->Visit(CopyTriangles{}, mesh))
   {

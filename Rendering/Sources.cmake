@@ -31,6 +31,7 @@ set(softshadows_rendering_framework_classes
 
 set(softshadows_rendering_framework_headers
   vtkShadowMapperCode.h
+  vtkShadowVTKVersion.h
   vtkShadowMatrices.h)
 
 # Internals: a technique's helpers, not installed.

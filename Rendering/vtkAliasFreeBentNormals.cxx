@@ -16,7 +16,7 @@
 #include "vtkShadowStage.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
+#include "vtkShadowVTKVersion.h"
 
 #include "vtkAliasFreeBendFS.h"
 #include "vtkAliasFreeBendVS.h"

@@ -27,7 +27,7 @@
 #include "vtkShadowScreenBuffers.h"
 #include "vtkTextureObject.h"
 #include "vtkTriangleFilter.h"
-#include "vtk_glew.h"
+#include "vtkShadowVTKVersion.h"
 
 #include "vtkAliasFreeCastersFS.h"
 #include "vtkAliasFreeCastersGS.h"

@@ -14,7 +14,7 @@
 #include "vtkShadowSampling.h"
 #include "vtkShadowScreenBuffers.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
+#include "vtkShadowVTKVersion.h"
 
 #include "vtkContactCommonFS.h"
 #include "vtkContactDistanceFS.h"

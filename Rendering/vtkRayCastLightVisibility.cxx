@@ -24,7 +24,12 @@
 #include "vtkTriangleFilter.h"
 #include "vtkUnsignedCharArray.h"
 
+// Embree 3 (Debian 12) or 4 (Debian 13 on), as CMake found it.
+#if SOFTSHADOWS_EMBREE_MAJOR >= 4
+#include <embree4/rtcore.h>
+#else
 #include <embree3/rtcore.h>
+#endif
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
@@ -52,6 +57,30 @@ struct SceneDeleter
 };
 using Device = std::unique_ptr<RTCDeviceTy, DeviceDeleter>;
 using Scene = std::unique_ptr<RTCSceneTy, SceneDeleter>;
+
+// The nearest hit and the any-hit test of one ray. Embree 4 dropped the
+// intersection context Embree 3 takes (its arguments are optional there).
+void Intersect(RTCScene scene, RTCRayHit& hit)
+{
+#if SOFTSHADOWS_EMBREE_MAJOR >= 4
+  rtcIntersect1(scene, &hit);
+#else
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  rtcIntersect1(scene, &context, &hit);
+#endif
+}
+
+void Occluded(RTCScene scene, RTCRay& ray)
+{
+#if SOFTSHADOWS_EMBREE_MAJOR >= 4
+  rtcOccluded1(scene, &ray);
+#else
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  rtcOccluded1(scene, &context, &ray);
+#endif
+}
 
 // One actor's (or block's) triangles, in world coordinates.
 struct Surface
@@ -344,8 +373,6 @@ int vtkRayCastLightVisibility::RequestData(
     vtkSMPTools::For(height * band / bands, height * (band + 1) / bands,
       [&](vtkIdType firstRow, vtkIdType lastRow)
       {
-        RTCIntersectContext context;
-        rtcInitIntersectContext(&context);
         for (vtkIdType y = firstRow; y < lastRow; ++y)
         {
           for (int x = 0; x < width; ++x)
@@ -370,7 +397,7 @@ int vtkRayCastLightVisibility::RequestData(
             hit.ray.time = 0.0f;
             hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
             hit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-            rtcIntersect1(visible.get(), &context, &hit);
+            Intersect(visible.get(), hit);
             if (hit.hit.geomID == RTC_INVALID_GEOMETRY_ID)
             {
               continue;
@@ -456,7 +483,7 @@ int vtkRayCastLightVisibility::RequestData(
                 shadow.mask = 0xFFFFFFFFU;
                 shadow.flags = 0;
                 shadow.time = 0.0f;
-                rtcOccluded1(casters.get(), &context, &shadow);
+                Occluded(casters.get(), shadow);
                 lit += shadow.tfar >= 0.0f ? 1 : 0; // -inf when occluded
               }
             }

@@ -10,7 +10,6 @@
 #include "vtkAssemblyPath.h"
 #include "vtkCompositeDataDisplayAttributes.h"
 #include "vtkCompositeDataSet.h"
-#include "vtkCompositePolyDataMapper2.h"
 #include "vtkDataObjectTree.h"
 #include "vtkDataObjectTreeIterator.h"
 #include "vtkMath.h"
@@ -21,6 +20,7 @@
 #include "vtkPropCollection.h"
 #include "vtkRenderer.h"
 #include "vtkShadowMatrices.h"
+#include "vtkShadowVTKVersion.h"
 #include "vtkSmartPointer.h"
 #include "vtkSoftShadowsMeshCheck.h"
 
@@ -206,12 +206,11 @@ void vtkShadowCasterRegistry::AddActor(vtkProp* prop, vtkActor* actor, vtkMatrix
     this->AddCaster(caster);
     return;
   }
-  auto* compositeMapper = vtkCompositePolyDataMapper2::SafeDownCast(mapper);
-  if (vtkCompositeDataSet::SafeDownCast(input) && compositeMapper)
+  auto* attributes = vtkShadowVTKVersion::CompositeDisplayAttributes(mapper);
+  if (vtkCompositeDataSet::SafeDownCast(input) && attributes)
   {
     unsigned int flatIndex = 0;
-    this->AddBlocks(
-      input, true, flatIndex, compositeMapper->GetCompositeDataDisplayAttributes(), caster);
+    this->AddBlocks(input, true, flatIndex, attributes, caster);
   }
 }
 

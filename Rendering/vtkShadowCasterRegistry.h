@@ -9,7 +9,7 @@
  * Part of the framework, refreshed at the start of every frame
  * (vtkSoftShadowPass::Render()). GetProps() are what light-space draws
  * render through VTK's mappers; GetCasters() give a technique each
- * polydata (each visible block of a vtkCompositePolyDataMapper2, block
+ * polydata (each visible block of VTK's composite mapper, block
  * visibility inherited as the mapper does; each visible part of a
  * vtkAssembly, and of composite props that list their parts, such as
  * vtkAxesActor) to derive

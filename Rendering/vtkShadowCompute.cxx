@@ -4,8 +4,8 @@
 
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
+#include "vtkShadowVTKVersion.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
 
 #include <vector>
 
@@ -20,7 +20,7 @@ bool vtkShadowCompute::IsSupported(vtkOpenGLRenderWindow* context, std::string* 
     }
     return false;
   }
-  if (GLEW_VERSION_4_3)
+  if (VTK_SHADOW_GL_HAS(VERSION_4_3))
   {
     return true;
   }
@@ -32,11 +32,13 @@ bool vtkShadowCompute::IsSupported(vtkOpenGLRenderWindow* context, std::string* 
       lacking += (lacking.empty() ? "" : ", ") + std::string(what);
     }
   };
-  need(GLEW_ARB_compute_shader, "compute shaders (ARB_compute_shader)");
-  need(GLEW_ARB_shader_storage_buffer_object,
+  need(VTK_SHADOW_GL_HAS(ARB_compute_shader), "compute shaders (ARB_compute_shader)");
+  need(VTK_SHADOW_GL_HAS(ARB_shader_storage_buffer_object),
     "shader storage buffers (ARB_shader_storage_buffer_object)");
-  need(GLEW_ARB_shader_image_load_store, "image load/store (ARB_shader_image_load_store)");
-  need(GLEW_ARB_shader_atomic_counters, "atomic counters (ARB_shader_atomic_counters)");
+  need(VTK_SHADOW_GL_HAS(ARB_shader_image_load_store),
+    "image load/store (ARB_shader_image_load_store)");
+  need(
+    VTK_SHADOW_GL_HAS(ARB_shader_atomic_counters), "atomic counters (ARB_shader_atomic_counters)");
   if (missing)
   {
     *missing = lacking;

@@ -17,7 +17,7 @@
 #include "vtkShadowShaderHooks.h"
 #include "vtkShadowStage.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
+#include "vtkShadowVTKVersion.h"
 
 #include <glm/gtc/type_ptr.hpp>
 

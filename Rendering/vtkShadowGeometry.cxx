@@ -12,7 +12,7 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkShaderProgram.h"
-#include "vtk_glew.h"
+#include "vtkShadowVTKVersion.h"
 
 #include <glm/gtc/type_ptr.hpp>
 

@@ -8,7 +8,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
+#include "vtkShadowVTKVersion.h"
 
 #include <cfloat>
 

@@ -15,8 +15,8 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkShadowMatrices.h"
+#include "vtkShadowVTKVersion.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
 
 #include "vtkShadowPackFS.h"
 #include "vtkShadowScreenCommonFS.h"
@@ -301,7 +301,7 @@ int vtkShadowScreenBuffers::GetMaximumTargets()
 //------------------------------------------------------------------------------
 bool vtkShadowScreenBuffers::SupportsSamplers() const
 {
-  return GLEW_VERSION_3_3 || GLEW_ARB_sampler_objects;
+  return VTK_SHADOW_GL_HAS(VERSION_3_3) || VTK_SHADOW_GL_HAS(ARB_sampler_objects);
 }
 
 //------------------------------------------------------------------------------
@@ -363,7 +363,7 @@ void vtkShadowScreenBuffers::EndVisibility()
 //------------------------------------------------------------------------------
 bool vtkShadowScreenBuffers::Pack(int numberOfLights)
 {
-  if (!(GLEW_VERSION_4_0 || GLEW_ARB_texture_gather))
+  if (!(VTK_SHADOW_GL_HAS(VERSION_4_0) || VTK_SHADOW_GL_HAS(ARB_texture_gather)))
   {
     if (!this->GatherReported)
     {

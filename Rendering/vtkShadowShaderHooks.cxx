@@ -20,6 +20,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkShadowMapperCode.h"
 #include "vtkShadowStage.h"
+#include "vtkShadowVTKVersion.h"
 
 #include "vtkShadowCubeLayersGS.h"
 
@@ -35,7 +36,7 @@ namespace
 // its programs inside ReadyShaderProgram(), before anyone could observe
 // them; this one observes each program it creates. Same text replacements,
 // same compile, VTK's code.
-class vtkShadowShaderLog : public vtkOpenGLShaderCache
+class vtkShadowShaderLog : public vtkShadowObservedShaderCache
 {
 public:
   static vtkShadowShaderLog* New();
@@ -43,10 +44,8 @@ public:
   std::vector<std::string> Errors;
 
 protected:
-  vtkShaderProgram* GetShaderProgram(
-    const char* vertex, const char* fragment, const char* geometry) override
+  void Created(vtkShaderProgram* program) override
   {
-    vtkShaderProgram* program = this->Superclass::GetShaderProgram(vertex, fragment, geometry);
     vtkNew<vtkCallbackCommand> keep;
     keep->SetClientData(&this->Errors);
     keep->SetCallback(
@@ -55,7 +54,6 @@ protected:
           static_cast<const char*>(text));
       });
     program->AddObserver(vtkCommand::ErrorEvent, keep);
-    return program;
   }
 };
 vtkStandardNewMacro(vtkShadowShaderLog);

@@ -20,7 +20,7 @@
 #include "vtkShadowScreenBuffers.h"
 #include "vtkTextureObject.h"
 #include "vtkTopologyAwareMeshFilter.h"
-#include "vtk_glew.h"
+#include "vtkShadowVTKVersion.h"
 
 #include "vtkSilhouetteBandsGS.h"
 #include "vtkSilhouetteCommon.h"

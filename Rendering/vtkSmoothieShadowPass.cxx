@@ -25,7 +25,7 @@
 #include "vtkShadowMapManager.h"
 #include "vtkShadowScreenBuffers.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
+#include "vtkShadowVTKVersion.h"
 
 #include "vtkSmoothieEdgesFS.h"
 #include "vtkSmoothieEdgesGS.h"

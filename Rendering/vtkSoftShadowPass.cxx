@@ -37,7 +37,7 @@
 #include "vtkTextureObject.h"
 #include "vtkTranslucentPass.h"
 #include "vtkVolumetricPass.h"
-#include "vtk_glew.h"
+#include "vtkShadowVTKVersion.h"
 
 #include "vtkShadowCubeLookupFS.h"
 #include "vtkShadowNormalOffsetFS.h"

@@ -33,8 +33,15 @@ vtk_module_add_module(VTK::RenderingSoftShadows
 vtk_module_include(VTK::RenderingSoftShadows PRIVATE Module Rendering)
 vtk_module_find_package(PACKAGE glm)
 vtk_module_find_package(PACKAGE OpenMesh)
-vtk_module_find_package(PACKAGE embree VERSION 3)
+find_package(embree 4 QUIET)
+if (embree_FOUND)
+  vtk_module_find_package(PACKAGE embree VERSION 4)
+else ()
+  vtk_module_find_package(PACKAGE embree VERSION 3)
+endif ()
 vtk_module_link(VTK::RenderingSoftShadows PRIVATE glm::glm OpenMeshCore embree)
+vtk_module_definitions(VTK::RenderingSoftShadows
+  PRIVATE "SOFTSHADOWS_EMBREE_MAJOR=${embree_VERSION_MAJOR}")
 if (CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
   # Brute-force and tree silhouette searches must agree bit for bit.
   vtk_module_compile_options(VTK::RenderingSoftShadows PRIVATE -ffp-contract=off)

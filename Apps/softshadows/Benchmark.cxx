@@ -9,7 +9,7 @@
 #include <vtkMath.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
-#include <vtk_glew.h>
+#include "vtkShadowVTKVersion.h"
 
 #include <nlohmann/json.hpp>
 

@@ -261,8 +261,11 @@ SceneActor ReadActor(
   }
   else if (value.contains("source"))
   {
-    actor.Source = ReadString(value["source"], FieldPath(path, "source"));
-    const Source& source = FindSource(actor.Source, FieldPath(path, "source"));
+    const std::string where = FieldPath(path, "source");
+    actor.Source = ReadString(value["source"], where);
+    // A named path: GCC 14 takes a reference returned next to a temporary
+    // argument for one to the temporary (-Wdangling-reference).
+    const Source& source = FindSource(actor.Source, where);
     actor.Parameters = CompleteParameters(source,
       value.contains("params") ? value["params"] : Json::object(), FieldPath(path, "params"));
   }

@@ -274,7 +274,8 @@ void CheckTechniqueParameters(
 //------------------------------------------------------------------------------
 TechniqueInstance CreateTechnique(const TechniqueSpec& spec, int mapSize, const Json& parameters)
 {
-  const Technique& technique = RequireTechnique(spec.Name, "technique");
+  const std::string where = "technique"; // a temporary would warn, as in SceneFile.cxx
+  const Technique& technique = RequireTechnique(spec.Name, where);
   std::string variant = spec.Variant;
   if (variant.empty() && parameters.contains("variant"))
   {

@@ -42,6 +42,6 @@ int TestAliasFreeShadowPass(int argc, char* argv[])
 
   vtkSmartPointer<vtkRenderWindow> window = ShadowTestScene::Show(renderer, 320, 240);
 
-  int result = vtkRegressionTestImage(window);
+  int result = vtkRegressionTestImageThreshold(window, ShadowTestScene::ImageThreshold);
   return result == vtkRegressionTester::FAILED ? EXIT_FAILURE : EXIT_SUCCESS;
 }

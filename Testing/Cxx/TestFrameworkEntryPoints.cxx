@@ -22,7 +22,6 @@
 #include "vtkCamera.h"
 #include "vtkCommand.h"
 #include "vtkCompositeDataDisplayAttributes.h"
-#include "vtkCompositePolyDataMapper2.h"
 #include "vtkCubeSource.h"
 #include "vtkDoubleArray.h"
 #include "vtkHardShadowPass.h"
@@ -52,13 +51,13 @@
 #include "vtkShadowMapManager.h"
 #include "vtkShadowScreenBuffers.h"
 #include "vtkShadowShaderHooks.h"
+#include "vtkShadowVTKVersion.h"
 #include "vtkSoftShadowPass.h"
 #include "vtkSphereSource.h"
 #include "vtkTextureObject.h"
 #include "vtkTransform.h"
 #include "vtkTransformPolyDataFilter.h"
 #include "vtkUnsignedCharArray.h"
-#include "vtk_glew.h"
 
 #include <glm/matrix.hpp>
 
@@ -502,7 +501,7 @@ int TestFrameworkEntryPoints(int, char*[])
   blocks->SetBlock(0, pebble(-1.5));
   blocks->SetBlock(1, hidden);
   blocks->SetBlock(2, pebble(-0.7));
-  vtkNew<vtkCompositePolyDataMapper2> compositeMapper;
+  vtkNew<vtkShadowVTKVersion::CompositeMapper> compositeMapper;
   compositeMapper->SetInputDataObject(blocks);
   vtkNew<vtkCompositeDataDisplayAttributes> attributes;
   compositeMapper->SetCompositeDataDisplayAttributes(attributes);

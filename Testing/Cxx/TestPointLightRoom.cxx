@@ -22,6 +22,6 @@ int TestPointLightRoom(int argc, char* argv[])
   renderer->SetPass(pass);
   vtkSmartPointer<vtkRenderWindow> window = ShadowTestScene::Show(renderer, 240, 180);
 
-  int result = vtkRegressionTestImage(window);
+  int result = vtkRegressionTestImageThreshold(window, ShadowTestScene::ImageThreshold);
   return result == vtkRegressionTester::FAILED ? EXIT_FAILURE : EXIT_SUCCESS;
 }

@@ -45,6 +45,6 @@ int TestSmoothieShadowPass(int argc, char* argv[])
   vtkSmartPointer<vtkRenderWindow> window =
     ShadowTestScene::Show(renderer, room ? 240 : 320, room ? 180 : 240);
 
-  int result = vtkRegressionTestImage(window);
+  int result = vtkRegressionTestImageThreshold(window, ShadowTestScene::ImageThreshold);
   return result == vtkRegressionTester::FAILED ? EXIT_FAILURE : EXIT_SUCCESS;
 }

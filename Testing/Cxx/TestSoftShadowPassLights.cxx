@@ -57,7 +57,7 @@ int TestSoftShadowPassLights(int argc, char* argv[])
     std::cerr << "expected 2 shadowed lights, got " << pass->GetNumberOfShadowedLights() << "\n";
     return EXIT_FAILURE;
   }
-  int result = vtkRegressionTestImage(window);
+  int result = vtkRegressionTestImageThreshold(window, ShadowTestScene::ImageThreshold);
 
   // Ground points on the ball's axis, pushed away from each light: each is
   // shadowed by its own light only. Ball centre (0, 1, 0), radius 0.5.

@@ -34,6 +34,24 @@ CAMERA = {"position": [0.0, 6.0, 6.0], "focal_point": [0.0, 0.0, 0.0],
           "view_up": [0.0, 1.0, 0.0], "view_angle": 40.0}
 
 
+def vtk_version():
+    """The VTK release the tests run on, as (major, minor): where releases
+    differ in what they can read or draw, the tests say so with it."""
+    from vtkmodules.vtkCommonCore import vtkVersion
+    return vtkVersion.GetVTKMajorVersion(), vtkVersion.GetVTKMinorVersion()
+
+
+def composite_mapper():
+    """A new mapper of VTK's for composite polydata: vtkCompositePolyDataMapper2
+    until VTK 9.3 moved that work into vtkCompositePolyDataMapper (9.5 removed
+    the former)."""
+    if vtk_version() >= (9, 3):
+        from vtkmodules.vtkRenderingCore import vtkCompositePolyDataMapper
+        return vtkCompositePolyDataMapper()
+    from vtkmodules.vtkRenderingOpenGL2 import vtkCompositePolyDataMapper2
+    return vtkCompositePolyDataMapper2()
+
+
 def ball_scene(height=1.0, light_radius=0.0, technique="hard", params=None,
                size=(240, 180), map_size=1024, light_type="spot"):
     shadows = {"technique": technique, "map_size": map_size}

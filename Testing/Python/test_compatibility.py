@@ -21,6 +21,7 @@ Every failure is listed before the test fails.
 import sys
 
 import numpy as np
+import shadowtest as st
 import vtkmodules.vtkInteractionStyle  # noqa: F401
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 from vtkmodules.util.misc import calldata_type
@@ -45,8 +46,7 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkAssembly, vtkColorTransfer
 from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
 from vtkmodules.vtkRenderingVolumeOpenGL2 import vtkOpenGLGPUVolumeRayCastMapper
 import vtkmodules.vtkRenderingFreeType  # noqa: F401
-from vtkmodules.vtkRenderingOpenGL2 import (vtkCompositePolyDataMapper2, vtkOpenGLSphereMapper,
-                                            vtkOpenGLStickMapper)
+from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLSphereMapper, vtkOpenGLStickMapper
 from vtksoftshadows import (vtkContactHardeningShadowPass, vtkHardShadowPass,
                             vtkOmnidirectionalShadowPass, vtkReferenceShadowPass,
                             vtkSoftShadowPass)
@@ -215,7 +215,7 @@ def case_composite():
         sphere.SetRadius(0.3)
         sphere.Update()
         blocks.SetBlock(i, sphere.GetOutput())
-    mapper = vtkCompositePolyDataMapper2()
+    mapper = st.composite_mapper()
     mapper.SetInputDataObject(blocks)
     return [actor_for(mapper)]
 

@@ -72,6 +72,9 @@ def scene(pass_class, textured=False):
     window = vtkRenderWindow()
     window.SetOffScreenRendering(True)
     window.SetSize(64, 64)
+    # Pixels all 0 or 255 below: no edge blended by multisampling, which
+    # VTK 9.6 applies to such windows under Xvfb and 9.1 does not.
+    window.SetMultiSamples(0)
     window.AddRenderer(renderer)
     return window, renderer, lights, shadows
 
