@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <fstream>
 #include <iterator>
+#include <memory>
 #include <new>
 #include <stdexcept>
 
@@ -64,15 +65,24 @@ vtkSmartPointer<vtkAlgorithm> MakePlyReader(const std::filesystem::path& file)
 }
 
 // VTK 9.1's OBJ reader reads only from a file: the file checked is read
-// again by it.
-vtkSmartPointer<vtkAlgorithm> MakeObjReader(const std::filesystem::path& file)
+// again by it, or a copy of it with absolute indices (AbsoluteObjIndices),
+// which `copy` keeps while the reader reads.
+vtkSmartPointer<vtkAlgorithm> MakeObjReader(
+  const std::filesystem::path& file, std::unique_ptr<TemporaryFile>& copy)
 {
-  const std::string problem = FindObjProblem(ReadBytes(file));
+  const std::string bytes = ReadBytes(file);
+  const std::string problem = FindObjProblem(bytes);
   if (!problem.empty())
   {
     throw std::runtime_error(problem);
   }
-  return MakeReader<vtkOBJReader>(file);
+  const std::string absolute = AbsoluteObjIndices(bytes);
+  if (absolute == bytes)
+  {
+    return MakeReader<vtkOBJReader>(file);
+  }
+  copy = std::make_unique<TemporaryFile>(absolute, ".obj");
+  return MakeReader<vtkOBJReader>(copy->Path());
 }
 
 // VTK 9.1's vtkSTLReader reads a file it does not take for text as binary
@@ -108,13 +118,14 @@ vtkSmartPointer<vtkAlgorithm> MakeStlReader(const std::filesystem::path& file)
 vtkSmartPointer<vtkPolyData> ReadMeshFile(const std::filesystem::path& file, MeshFormat format)
 {
   vtkSmartPointer<vtkAlgorithm> reader;
+  std::unique_ptr<TemporaryFile> copy;
   switch (format)
   {
     case MeshFormat::VTP:
       reader = MakeVtpReader(file);
       break;
     case MeshFormat::OBJ:
-      reader = MakeObjReader(file);
+      reader = MakeObjReader(file, copy);
       break;
     case MeshFormat::PLY:
       reader = MakePlyReader(file);

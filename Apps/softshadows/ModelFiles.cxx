@@ -5,6 +5,7 @@
 #include "GltfFiles.h"
 #include "MeshFiles.h"
 #include "MessageCapture.h"
+#include "ObjFiles.h"
 #include "vtkSoftShadowsMeshCheck.h"
 
 #include <vtkActor.h>
@@ -30,7 +31,6 @@
 #include <stdexcept>
 #include <string>
 
-#include <unistd.h>
 
 namespace softshadows
 {
@@ -109,26 +109,12 @@ public:
       fixed += line + "\n";
     }
     fixed += "\n# end\n";
-    static int count = 0;
-    this->File = std::filesystem::temp_directory_path() /
-      ("softshadows-" + std::to_string(::getpid()) + "-" + std::to_string(count++) + ".mtl");
-    std::ofstream out(this->File, std::ios::binary);
-    out << fixed;
-    if (!out)
-    {
-      throw std::runtime_error("cannot write a copy of " + library.string() + " to " +
-        this->File.string() + " for VTK's importer");
-    }
+    this->Copy = std::make_unique<TemporaryFile>(fixed, ".mtl");
   }
-  ~MaterialCopy()
-  {
-    std::error_code error;
-    std::filesystem::remove(this->File, error);
-  }
-  MaterialCopy(const MaterialCopy&) = delete;
-  MaterialCopy& operator=(const MaterialCopy&) = delete;
+  const std::filesystem::path& File() const { return this->Copy->Path(); }
 
-  std::filesystem::path File;
+private:
+  std::unique_ptr<TemporaryFile> Copy;
 };
 
 SceneLight FromVTK(vtkLight* light)
@@ -237,15 +223,24 @@ ImportedModel ImportModel(const std::filesystem::path& file)
   vtkSmartPointer<vtkImporter> importer;
   vtkGLTFImporter* gltf = nullptr;
   std::unique_ptr<MaterialCopy> materials;
+  std::unique_ptr<TemporaryFile> absolute;
   if (obj)
   {
     vtkNew<vtkOBJImporter> objImporter;
-    objImporter->SetFileName(file.string().c_str());
+    // Relative indices resolved as for the reader (ObjFiles.h).
+    std::ifstream in(file, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string resolved = AbsoluteObjIndices(bytes);
+    if (resolved != bytes)
+    {
+      absolute = std::make_unique<TemporaryFile>(resolved, ".obj");
+    }
+    objImporter->SetFileName((absolute ? absolute->Path() : file).string().c_str());
     const std::filesystem::path library = MaterialLibrary(file);
     if (!library.empty())
     {
       materials = std::make_unique<MaterialCopy>(library);
-      objImporter->SetFileNameMTL(materials->File.string().c_str());
+      objImporter->SetFileNameMTL(materials->File().string().c_str());
     }
     // Texture names in the MTL are relative to the OBJ's folder.
     objImporter->SetTexturePath((file.parent_path().string() + "/").c_str());

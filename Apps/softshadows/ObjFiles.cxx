@@ -2,10 +2,15 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "ObjFiles.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <fstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -108,7 +113,7 @@ std::string FindObjProblem(const std::string& bytes)
 
   // The reader's first pass: material names, and the texture coordinates
   // every face's are looked up in. A line too long ends it (and the read).
-  int textureCoordinates = 0;
+  int textureCoordinates = 0, allPoints = 0;
   for (std::size_t i = 0; i < lines.size(); ++i)
   {
     const Command command = Split(lines[i]);
@@ -128,6 +133,10 @@ std::string FindObjProblem(const std::string& bytes)
     else if (command.Name == "vt")
     {
       ++textureCoordinates;
+    }
+    else if (command.Name == "v")
+    {
+      ++allPoints;
     }
     const bool last = i + 1 == lines.size();
     if (lines[i].back() != '\n' && !(last && lines[i].size() < LineBuffer - 1))
@@ -212,6 +221,23 @@ std::string FindObjProblem(const std::string& bytes)
           return std::string(); // "Error reading 'f' at line ..."
         }
         ++count;
+        // Every release refuses these, but not alike (VTK 9.4's reader
+        // itself, earlier ones through the mesh check after it).
+        const char* what = isFace ? "a face" : (name == "l" ? "a line" : "a point");
+        if (vertex == 0)
+        {
+          return At(i) + what + " uses vertex 0, and OBJ counts vertices from 1";
+        }
+        if (vertex < 0 && points + vertex < 0)
+        {
+          return At(i) + what + " uses vertex " + std::to_string(vertex) + ", but " +
+            std::to_string(points) + " come before it";
+        }
+        if (vertex > allPoints)
+        {
+          return At(i) + what + " uses vertex " + std::to_string(vertex) +
+            " (counted from 1), but the file has " + std::to_string(allPoints);
+        }
         if (isFace)
         {
           face.Vertices.push_back(vertex < 0 ? points + vertex : vertex - 1);
@@ -288,5 +314,82 @@ std::string FindObjProblem(const std::string& bytes)
     }
   }
   return std::string();
+}
+
+//------------------------------------------------------------------------------
+std::string AbsoluteObjIndices(const std::string& bytes)
+{
+  // Vertices, texture coordinates and normals read so far: what a relative
+  // index counts back from.
+  long counts[3] = { 0, 0, 0 };
+  std::string out;
+  out.reserve(bytes.size());
+  bool continued = false; // the line continues an element's
+  for (std::size_t start = 0; start < bytes.size();)
+  {
+    const std::size_t newline = bytes.find('\n', start);
+    const std::size_t end = newline == std::string::npos ? bytes.size() : newline + 1;
+    const std::string line = bytes.substr(start, end - start);
+    start = end;
+    std::size_t first = 0; // where the element's words start
+    if (!continued)
+    {
+      const Command command = Split(line);
+      const std::string& name = command.Name;
+      if (name == "v" || name == "vt" || name == "vn")
+      {
+        ++counts[name == "v" ? 0 : (name == "vt" ? 1 : 2)];
+      }
+      if (name != "f" && name != "l" && name != "p")
+      {
+        out += line;
+        continue;
+      }
+      first = static_cast<std::size_t>(command.Arguments - line.c_str());
+    }
+    out += line.substr(0, first);
+    // Each word is v, v/t, v//n or v/t/n: its k-th number indexes counts[k].
+    int slot = 0;
+    for (std::size_t i = first; i < line.size();)
+    {
+      const char c = line[i];
+      if (c == '-' && slot < 3 && i + 1 < line.size() &&
+        std::isdigit(static_cast<unsigned char>(line[i + 1])))
+      {
+        char* after = nullptr;
+        const long index = std::strtol(line.c_str() + i, &after, 10);
+        out += std::to_string(counts[slot] + index + 1);
+        i = static_cast<std::size_t>(after - line.c_str());
+        continue;
+      }
+      slot = IsSpace(c) ? 0 : (c == '/' ? slot + 1 : slot);
+      out += c;
+      ++i;
+    }
+    // A backslash before the newline continues the element on the next line.
+    const std::size_t last = line.find_last_not_of("\r\n");
+    continued = last != std::string::npos && line[last] == '\\';
+  }
+  return out;
+}
+
+//------------------------------------------------------------------------------
+TemporaryFile::TemporaryFile(const std::string& text, const std::string& suffix)
+{
+  static int count = 0;
+  this->File = std::filesystem::temp_directory_path() /
+    ("softshadows-" + std::to_string(::getpid()) + "-" + std::to_string(count++) + suffix);
+  std::ofstream out(this->File, std::ios::binary);
+  out << text;
+  if (!out)
+  {
+    throw std::runtime_error("cannot write " + this->File.string() + " for VTK's reader");
+  }
+}
+
+TemporaryFile::~TemporaryFile()
+{
+  std::error_code error;
+  std::filesystem::remove(this->File, error);
 }
 }

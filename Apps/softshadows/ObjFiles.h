@@ -16,6 +16,7 @@
 #ifndef softshadows_ObjFiles_h
 #define softshadows_ObjFiles_h
 
+#include <filesystem>
 #include <string>
 
 namespace softshadows
@@ -23,6 +24,33 @@ namespace softshadows
 /// Why `bytes`, a whole OBJ file, must not be given to vtkOBJReader, in one
 /// sentence; empty when it may (the reader may still refuse it, saying why).
 std::string FindObjProblem(const std::string& bytes);
+
+/**
+ * The OBJ text `bytes` with every negative (relative) index of its
+ * elements written as the absolute one it means, counted from 1. VTK 9.3.0's
+ * reader resolves a face's relative texture coordinates against the count
+ * of normals and the other way round (fixed upstream since), which reads
+ * past its arrays; absolute indices read alike in every release.
+ */
+std::string AbsoluteObjIndices(const std::string& bytes);
+
+/**
+ * A file of `text` in the temporary folder, named with `suffix` (".obj",
+ * ".mtl"), for VTK's readers that read only from files; removed when this
+ * goes.
+ */
+class TemporaryFile
+{
+public:
+  TemporaryFile(const std::string& text, const std::string& suffix);
+  ~TemporaryFile();
+  TemporaryFile(const TemporaryFile&) = delete;
+  TemporaryFile& operator=(const TemporaryFile&) = delete;
+  const std::filesystem::path& Path() const { return this->File; }
+
+private:
+  std::filesystem::path File;
+};
 }
 
 #endif

@@ -168,12 +168,24 @@ broken = {
     "glTF2/wrongTypes/badObject.gltf": "is not an object",
     "glTF2/SchemaFailures/sceneWrongType.gltf": "scene is not an index",
     "glTF2/draco/2CylinderEngine.gltf": "Draco",
-    "glTF2/IndexOutOfRange/IndexOutOfRange.gltf": "point id",
     "glTF2/BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb": "not finite",
-    "OBJ/cube_with_vertexcolors.obj": "values",
     "OBJ/point_cloud.obj": "no polygons",
     "OBJ/box_UTF16BE.obj": "NUL",
 }
+# Colours after a vertex's coordinates: VTK 9.1's importer gives them to
+# too few points, which is refused; 9.3's reads them.
+VERTEX_COLORS = "OBJ/cube_with_vertexcolors.obj"
+# Indices past a glTF accessor's data: VTK 9.6's loader refuses them itself,
+# earlier ones load them and the mesh check refuses the point ids.
+broken["glTF2/IndexOutOfRange/IndexOutOfRange.gltf"] = (
+    "point id" if st.vtk_version() < (9, 6) else "Error loading model data")
+if st.vtk_version() < (9, 3):
+    broken[VERTEX_COLORS] = "values"
+else:
+    result = st.run(["render", os.path.join(MODELS, VERTEX_COLORS), "--output", os.devnull]
+                    + SIZE, check=False)
+    st.check(result.returncode == 0 and not result.stderr.strip(),
+             "%s renders (%d: %r)" % (VERTEX_COLORS, result.returncode, result.stderr))
 for name, needle in sorted(broken.items()):
     result = st.run(["render", os.path.join(MODELS, name), "--output", os.devnull] + SIZE,
                     check=False)
