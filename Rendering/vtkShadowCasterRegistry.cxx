@@ -12,6 +12,7 @@
 #include "vtkCompositeDataSet.h"
 #include "vtkDataObjectTree.h"
 #include "vtkDataObjectTreeIterator.h"
+#include "vtkDataSetMapper.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
@@ -186,7 +187,16 @@ void vtkShadowCasterRegistry::AddActors(vtkProp* prop)
 //------------------------------------------------------------------------------
 void vtkShadowCasterRegistry::AddActor(vtkProp* prop, vtkActor* actor, vtkMatrix4x4* matrix)
 {
-  auto* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
+  // Polydata mappers, and vtkDataSetMapper (PyVista's add_mesh() draws
+  // with it), which draws polydata as they do and other datasets' surfaces
+  // through a polydata mapper of its own, made at its first render.
+  vtkMapper* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
+  if (auto* datasetMapper = vtkDataSetMapper::SafeDownCast(actor->GetMapper()))
+  {
+    mapper = vtkPolyData::SafeDownCast(datasetMapper->GetInputDataObject(0, 0))
+      ? static_cast<vtkMapper*>(datasetMapper)
+      : datasetMapper->GetPolyDataMapper();
+  }
   if (!mapper)
   {
     return;
