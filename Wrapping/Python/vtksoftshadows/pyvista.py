@@ -79,7 +79,7 @@ import pyvista
 from vtkmodules.vtkCommonCore import vtkCommand
 from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLFXAAPass
 
-from . import vtkShadowTechniqueCatalog, vtkSoftShadowPass
+from . import vtkHardShadowPass, vtkShadowTechniqueCatalog, vtkSoftShadowPass
 
 __all__ = [
     "SoftShadowsCompatibilityError",
@@ -98,8 +98,9 @@ _CATALOG = vtkShadowTechniqueCatalog
 _SCREEN_SPACE = ("contact", "reference", "aliasfree")
 _LIGHT_SPACE = ("hard", "omni", "silhouette", "smoothies")
 
-# Scene-file keys that are not catalog parameters (docs/scene-format.md).
-_MAP_SIZE = (16, 16384)
+# map_size, the scene-file key that is not a catalog parameter
+# (docs/scene-format.md): the range vtkSoftShadowPass::SetMapSize() clamps to.
+_MAP_SIZE = (vtkHardShadowPass().GetMapSizeMinValue(), vtkHardShadowPass().GetMapSizeMaxValue())
 
 _STATES = {}  # id(renderer) -> _State
 
