@@ -84,7 +84,7 @@ def scene(lighting="none", shape=(1, 1), poly=False):
             if lighting == "none":
                 light = pv.Light(position=tuple(st.LIGHT), focal_point=(0, 0, 0), positional=True,
                                  cone_angle=45, light_type="scene light")
-                pl.add_light(light)
+                pl.add_light(light, only_active=True)  # one light a subplot
                 lights.append(light)
             pl.camera_position = [tuple(st.CAMERA["position"]), tuple(st.CAMERA["focal_point"]),
                                   tuple(st.CAMERA["view_up"])]
@@ -195,7 +195,8 @@ after = grab(pl)
 st.check(np.array_equal(after, plain), "after disable the picture is the never-enabled one "
          "(largest difference %g)" % np.abs(after - plain).max())
 disable_soft_shadows(pl)
-st.check(True, "disable when not enabled does nothing")
+st.check(pl.renderer.GetPass() is None and get_soft_shadow_pass(pl) is None
+         and np.array_equal(grab(pl), plain), "disable when not enabled changes nothing")
 
 # On and off again and again (the toggling of pyvista#8685): each time the
 # same pictures.
@@ -391,14 +392,14 @@ kit = enable_soft_shadows(p, "hard", light_radius=2.0)
 grab(p)
 lights = [p.renderer.GetLights().GetItemAsObject(i)
           for i in range(p.renderer.GetLights().GetNumberOfItems())]
-heads = [l for l in lights if l.LightTypeIsHeadlight()]
-sized = [l for l in lights if l.GetInformation().Has(RADIUS_KEY)]
+heads = [light for light in lights if light.LightTypeIsHeadlight()]
+sized = [light for light in lights if light.GetInformation().Has(RADIUS_KEY)]
 st.check(len(lights) == 5 and len(heads) == 1 and len(sized) == 4
          and kit.GetNumberOfShadowedLights() == 4,
          "light kit: %d lights, %d headlight, %d sized, %d shadowed"
          % (len(lights), len(heads), len(sized), kit.GetNumberOfShadowedLights()))
 disable_soft_shadows(p)
-st.check(not any(l.GetInformation().Has(RADIUS_KEY) for l in lights),
+st.check(not any(light.GetInformation().Has(RADIUS_KEY) for light in lights),
          "light kit: the sizes are taken back")
 p.close()
 
@@ -424,7 +425,8 @@ else:
     grab(p)
     p.close()
     disable_soft_shadows(p)
-    st.check(True, "closing a plotter with soft shadows on, then disabling: no error")
+    st.check(get_soft_shadow_pass(p) is None,
+             "closing a plotter with soft shadows on, then disabling: none left")
 
 reference.close()
 text = take_messages()

@@ -10,14 +10,14 @@
     pl.add_mesh(pv.Sphere(radius=0.5, center=(0, 1, 0)))
     pl.add_light(pv.Light(position=(1, 5, 0.5), focal_point=(0, 0, 0),
                           positional=True, cone_angle=45))
-    shadows = enable_soft_shadows(pl, "contact", light_radius=0.3, map_size=2048)
-    pl.show()
+    enable_soft_shadows(pl, "contact", light_radius=0.3, map_size=2048)
+    pl.show(auto_close=False)
     disable_soft_shadows(pl)      # back to what the plotter drew before
 
 With PyVista 0.48 and later the same is reachable from the plotter once this
-module is imported (or declared as a ``pyvista.plotter_components`` entry
-point): ``pl.enable_soft_shadows(...)``, ``pl.disable_soft_shadows()`` and the
-namespace ``pl.soft_shadows`` (``enable``, ``disable``, ``shadow_pass``).
+module is imported: ``pl.enable_soft_shadows(...)``,
+``pl.disable_soft_shadows()`` and the namespace ``pl.soft_shadows``
+(``enable``, ``disable``, ``shadow_pass``, ``enabled``).
 
 Where the pass goes. PyVista draws the scene through its own pass chain
 (``pyvista/plotting/render_passes.py``): a ``vtkCameraPass`` around a
@@ -36,7 +36,7 @@ pass goes).
 What combines and what is refused (``SoftShadowsCompatibilityError`` when
 enabling; a conflict made afterwards turns the soft shadows off at the next
 frame, with a ``RuntimeWarning`` saying why), as pictures drawn with PyVista
-0.44.1 and VTK 9.1 show (Testing/Python/test_pyvista.py):
+0.44.1 on VTK 9.3 and 0.49.0 on VTK 9.6 show (Testing/Python/test_pyvista.py):
 
 - SSAO, eye dome lighting, blurring, MSAA: combined with every technique.
   (SSAO registers its shader hooks on the props, and its
@@ -523,6 +523,9 @@ class _State:
             fxaa, self.fxaa = self.fxaa, None
             passes._remove_pass(fxaa)
             if self.rendered:
+                # Releasing an image-processing pass releases its delegate:
+                # the chain, which goes on drawing.
+                fxaa.SetDelegatePass(None)
                 _release(renderer.GetRenderWindow(), fxaa)
 
     def _on_start(self, caller, event):
@@ -572,20 +575,40 @@ class _State:
 
     # Lights ----------------------------------------------------------------
 
+    def _sized_elsewhere(self):
+        """(light, radius) sized by the soft shadows of other renderers: a
+        light PyVista adds to every subplot is one light for all of them."""
+        return [entry for state in list(_STATES.values()) if state is not self
+                for entry in state.sized]
+
     def size_lights(self, radius):
         self.restore_lights()
         if radius is None:
             return
         key = vtkSoftShadowPass.RADIUS()
+        elsewhere = self._sized_elsewhere()
         for light in _lights(self.renderer_ref()):
-            if light.LightTypeIsHeadlight() or light.GetInformation().Has(key):
-                continue  # headlights cast no shadow; a light with a size keeps it
+            if light.LightTypeIsHeadlight():
+                continue  # headlights cast no shadow
+            shared = [r for other, r in elsewhere if other is light]
+            if shared:
+                if shared[0] != radius:
+                    warnings.warn("a light of this renderer is also another subplot's, whose "
+                                  "soft shadows gave it radius %g; it keeps it" % shared[0],
+                                  RuntimeWarning, stacklevel=3)
+                self.sized.append((light, shared[0]))
+                continue
+            if light.GetInformation().Has(key):
+                continue  # a light with a size of its own keeps it
             vtkSoftShadowPass.SetRadius(radius, light)
             self.sized.append((light, radius))
 
     def restore_lights(self):
         key = vtkSoftShadowPass.RADIUS()
+        elsewhere = self._sized_elsewhere()
         for light, radius in self.sized:
+            if any(other is light for other, _ in elsewhere):
+                continue  # another renderer's soft shadows still use its size
             information = light.GetInformation()
             if information.Has(key) and information.Get(key) == radius:
                 information.Remove(key)
@@ -622,6 +645,8 @@ class _State:
             except (RuntimeError, AttributeError):
                 pass  # "The renderer has been closed.": nothing is drawn any more
         if release and self.rendered:
+            if fxaa is not None:
+                fxaa.SetDelegatePass(None)  # not PyVista's chain with it
             _release(renderer.GetRenderWindow(), shadow_pass, fxaa)
 
 
@@ -714,15 +739,17 @@ def enable_soft_shadows(plotter, technique="contact", light_radius=None, **param
 
 
 def disable_soft_shadows(plotter):
-    """Turn the soft shadows off: the renderer draws as it did before they
-    were enabled (PyVista's own passes kept), the lights lose the size
+    """Turn the soft shadows off, in every renderer of a plotter (or in the
+    one renderer given): it draws as it did before they were enabled (PyVista's own passes kept), the lights lose the size
     ``enable_soft_shadows`` gave them, and the pass's GPU resources are
     released (``ReleaseGraphicsResources``). Without soft shadows on, it does
     nothing."""
-    renderer, _ = _resolve(plotter)
-    state = _state(renderer)
-    if state is not None:
-        state.disable(release=True)
+    renderer, owner = _resolve(plotter)
+    renderers = list(getattr(owner, "renderers", None) or [renderer]) if owner else [renderer]
+    for each in renderers:
+        state = _state(each)
+        if state is not None:
+            state.disable(release=True)
 
 
 def get_soft_shadow_pass(plotter):
@@ -803,6 +830,7 @@ class _DisableSoftShadows:
 
 _EnableSoftShadows.__doc__ = enable_soft_shadows.__doc__
 _DisableSoftShadows.__doc__ = disable_soft_shadows.__doc__
+
 
 def _base_plotter():
     base = getattr(pyvista, "BasePlotter", None)
