@@ -1,19 +1,24 @@
 #!/usr/bin/env bash
 # SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
 # SPDX-License-Identifier: BSD-3-Clause
-# The ParaView plugin, unattended on a fresh Debian 12 (as root): installs
-# what is missing, unpacks Debian's paraview, paraview-dev and
-# python3-paraview into build-paraview/prefix (installing python3-paraview
-# would remove python3-vtk9, which the rest of the project needs; ParaView's
-# CMake files are relocatable), builds the module against ParaView's own VTK
-# 9.2 in build-paraview/ and runs its C++ tests there, image tests included,
-# builds the plugin (ParaView/) in build-paraview/plugin, writes pvpython and
-# pvbatch wrappers that find it all, runs the plugin's test in pvpython and
-# its parallel tests in pvbatch on one and two MPI ranks and through a
-# pvserver on two ranks, and ends with three
-# lines: PLUGIN=, PVPYTHON= and PVBATCH=. Exits non-zero on
-# any failure. docs/paraview.md.
-#   bash scripts/paraview.sh [CTEST ARGUMENTS...]
+# The ParaView plugin, unattended on a fresh Debian 12, 13 or unstable (as
+# root; ParaView 5.11, 5.13 or 6.1): installs what is missing, unpacks
+# Debian's paraview, paraview-dev and python3-paraview into
+# build-paraview/prefix (on 12 and 13 installing python3-paraview would
+# remove python3-vtk9, which the rest of the project needs; ParaView's CMake
+# files are relocatable), finds which ParaView it holds, builds the module
+# against ParaView's VTK (its own 9.2 or 9.3 in build-paraview/, without the
+# programs, C++ tests and image tests run there; unstable's ParaView uses the
+# system's VTK, so the module's ordinary build serves), the ordinary build
+# (build/, whose softshadows program the plugin's test asks for the
+# techniques), builds the plugin (ParaView/) in
+# build-paraview/plugin, writes pvpython and pvbatch wrappers that find it
+# all, runs the plugin's test in pvpython and its parallel tests in pvbatch
+# on one and two MPI ranks and through a pvserver on two ranks, and ends
+# with three lines: PLUGIN=, PVPYTHON= and PVBATCH=. Exits non-zero on any
+# failure. docs/paraview.md. With --prepare it only installs and unpacks
+# (CI does that in the background while it tests something else).
+#   bash scripts/paraview.sh [--prepare | CTEST ARGUMENTS...]
 set -euo pipefail
 
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
@@ -21,11 +26,9 @@ root=$(softshadows_root)
 cd "$root"
 
 packages=(paraview paraview-dev python3-paraview)
-build="$root/build-paraview"
+build=$(softshadows_build_dir build-paraview)
 prefix="$build/prefix"
-# ParaView's CMake configuration looks for Qt's development files.
-softshadows_install_packages "${SOFTSHADOWS_PACKAGES[@]}" qtbase5-dev qttools5-dev \
-  libqt5opengl5-dev libqt5svg5-dev qtxmlpatterns5-dev-tools
+softshadows_install_packages "${SOFTSHADOWS_PACKAGES[@]}"
 
 if [ ! -f "$prefix/.unpacked" ]; then
   downloads="$build/downloads"
@@ -54,21 +57,52 @@ if [ ! -f "$prefix/.unpacked" ]; then
   softshadows_install_packages "${depends[@]}" openmpi-bin
   touch "$prefix/.unpacked"
 fi
+# Debian's ParaView 5.13 and 6.1 name their Python modules with the
+# interpreter's suffix (vtkCommonCore.cpython-313-x86_64-linux-gnu.so) where
+# their CMake files name them plainly (vtkCommonCore.so), and CMake refuses
+# targets whose files are missing: the plain names as links.
+while read -r module; do
+  plain="${module%%.cpython-*}.so"
+  [ -e "$plain" ] || ln -s "$(basename "$module")" "$plain"
+done < <(find "$prefix/usr/lib/python3/dist-packages" -name '*.cpython-*.so')
+if [ "${1:-}" = --prepare ]; then
+  exit 0
+fi
 
-vtk_dir="$prefix/usr/lib/x86_64-linux-gnu/cmake/paraview-5.11/vtk"
-softshadows_build build-paraview "-DVTK_DIR=$vtk_dir"
-# The Python tests need ParaView's own Python, which conflicts with the
-# system's vtkmodules; the install test builds against the system VTK.
-softshadows_ctest build-paraview -E '^(Python|Install)\.' "$@"
+# Which ParaView: its CMake package is paraview-5.11, -5.13 or -6.1.
+paraview_dir=$(echo "$prefix"/usr/lib/*/cmake/paraview-[0-9]*)
+if [ ! -f "$paraview_dir/paraview-config.cmake" ]; then
+  echo "scripts/paraview.sh: no ParaView CMake package in $prefix" >&2
+  exit 1
+fi
+libdir=$(dirname "$(dirname "$paraview_dir")")
+echo "ParaView ${paraview_dir##*/paraview-} from Debian's packages" >&2
+
+if [ -f "$paraview_dir/vtk/vtk-config.cmake" ]; then
+  # ParaView's own VTK (5.11: 9.2, 5.13: 9.3): the module built against it,
+  # and its C++ tests run there. The Python tests need ParaView's own Python,
+  # which conflicts with the system's vtkmodules; the install test builds
+  # against the system VTK.
+  module_build=build-paraview
+  softshadows_build build-paraview "-DVTK_DIR=$paraview_dir/vtk" -DSOFTSHADOWS_APPLICATIONS=OFF
+  softshadows_ctest build-paraview -E '^(Python|Install)\.' "$@"
+else
+  # ParaView built on the system's VTK (6.1 on Debian unstable): the
+  # module's ordinary build is the one, tested by scripts/test.sh.
+  module_build=build
+fi
+# The ordinary build's softshadows program lists the techniques the plugin's
+# panel must offer (test_plugin.py).
+softshadows_build build
+softshadows=$(softshadows_build_dir build)/bin/softshadows
 
 # The module installed, and the plugin built against it and ParaView.
 install="$build/install"
-cmake --install "$build" --prefix "$install" >/dev/null
+cmake --install "$(softshadows_build_dir "$module_build")" --prefix "$install" >/dev/null
 plugin_build="$build/plugin"
-if [ ! -f "$plugin_build/CMakeCache.txt" ]; then
+if [ ! -f "$plugin_build/CMakeCache.txt" ] || [ ! -f "$plugin_build/Makefile" ]; then
   cmake -S "$root/ParaView" -B "$plugin_build" -DCMAKE_BUILD_TYPE=Release \
-    "-DParaView_DIR=$prefix/usr/lib/x86_64-linux-gnu/cmake/paraview-5.11" \
-    "-DSoftShadows_DIR=$install/lib/cmake/softshadows"
+    "-DParaView_DIR=$paraview_dir" "-DSoftShadows_DIR=$install/lib/cmake/softshadows"
 fi
 cmake --build "$plugin_build" -j2
 plugin="$plugin_build/lib/SoftShadows/SoftShadows.so"
@@ -79,7 +113,7 @@ for program in pvpython pvbatch pvserver; do
   cat >"$build/$program" <<WRAPPER
 #!/bin/sh
 # $program from Debian's ParaView unpacked in $prefix (scripts/paraview.sh).
-export LD_LIBRARY_PATH="$prefix/usr/lib/x86_64-linux-gnu:$install/lib\${LD_LIBRARY_PATH:+:\$LD_LIBRARY_PATH}"
+export LD_LIBRARY_PATH="$libdir:$install/lib\${LD_LIBRARY_PATH:+:\$LD_LIBRARY_PATH}"
 export PYTHONPATH="$prefix/usr/lib/python3/dist-packages\${PYTHONPATH:+:\$PYTHONPATH}"
 exec "$prefix/usr/bin/$program" "\$@"
 WRAPPER
@@ -88,7 +122,7 @@ done
 
 xvfb() { xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" "$@"; }
 xvfb "$build/pvpython" --force-offscreen-rendering "$root/Testing/ParaView/test_plugin.py" "$plugin" \
-  "$build/bin/softshadows"
+  "$softshadows"
 # Across MPI ranks: one rank's images, then two ranks' checked against them.
 parallel="$build/parallel-test"
 rm -rf "$parallel"

@@ -29,6 +29,7 @@ view.ShadowTechnique = technique
 view.ShadowMapSize = 2048
 view.UseLight = 0  # only the spot light below lights the scene
 view.OrientationAxesVisibility = 0
+view.UseColorPaletteForBackground = 0  # else the palette's background wins
 view.Background = [0.32, 0.34, 0.43]
 
 # The data: a blobby isosurface inside [-10, 10]^3, over a floor below it.

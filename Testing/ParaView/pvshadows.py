@@ -7,8 +7,8 @@ import os
 import sys
 
 import numpy as np
-from paraview.simple import (AddLight, CreateView, Plane, ProcessIdScalars, Render,
-                             SaveScreenshot, Show, Sphere)
+import paraview.simple as pvsimple
+from paraview.simple import AddLight, CreateView, Plane, Render, SaveScreenshot, Show, Sphere
 
 # The module's own test helpers, for what does not depend on which VTK runs them.
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Python"))
@@ -68,6 +68,9 @@ def scene(proxy, technique=None, ball_resolution=32, light_position=LIGHT, ball_
     view.ViewSize = SIZE
     view.OrientationAxesVisibility = 0
     view.UseLight = 0  # the light kit off: only the spot light below
+    # The baselines' blue grey, which ParaView 6 no longer takes by default.
+    view.UseColorPaletteForBackground = 0
+    view.Background = [0.32, 0.34, 0.43]
     if technique is not None:
         view.ShadowTechnique = technique
     plane = Plane(Origin=[-3, 0, -3], Point1=[3, 0, -3], Point2=[-3, 0, 3])
@@ -122,6 +125,11 @@ def ground_shadow_radius():
 
 def process_ids_range(source):
     """The range of ranks holding pieces of `source`."""
-    ids = ProcessIdScalars(Input=source)
+    # Looked up when called: test_client_server.py imports this module before
+    # it connects. Process Ids from 5.13 on (6.0 removed Process Id Scalars).
+    if hasattr(pvsimple, "ProcessIds"):
+        ids, array = pvsimple.ProcessIds(Input=source), "PointProcessIds"
+    else:
+        ids, array = pvsimple.ProcessIdScalars(Input=source), "ProcessId"
     ids.UpdatePipeline()
-    return ids.PointData["ProcessId"].GetRange()
+    return ids.PointData[array].GetRange()

@@ -39,10 +39,19 @@ HARD = ("hard", "hard:sixpass", "silhouette:hard", "aliasfree:hard", "omni", "om
 BASELINES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "Baseline")
 
 
+def techniques_listing(program):
+    """What `softshadows techniques` prints. The program is the ordinary
+    build's, against the system's VTK: without the library path the pvpython
+    wrapper sets for ParaView's VTK and the module built against it."""
+    environment = {key: value for key, value in os.environ.items()
+                   if key not in ("LD_LIBRARY_PATH", "PYTHONPATH")}
+    return subprocess.run([program, "techniques"], check=True, capture_output=True,
+                          text=True, env=environment).stdout
+
+
 def listed_parameters(program):
     """{property name: default} of every technique parameter the program lists."""
-    listing = subprocess.run([program, "techniques"], check=True, capture_output=True,
-                             text=True).stdout
+    listing = techniques_listing(program)
     parameters = {}
     technique = None
     for line in listing.splitlines():
@@ -69,8 +78,7 @@ with tempfile.TemporaryDirectory() as folder:
     plain, _ = pvshadows.screenshot(plain_view, folder, "plain")
     view, light, _ = pvshadows.scene("ShadowRenderView")
     names = view.GetProperty("ShadowTechnique").Available
-    specs = subprocess.run([program, "techniques"], check=True, capture_output=True,
-                           text=True).stdout
+    specs = techniques_listing(program)
     variants = {}
     for line in specs.splitlines():
         if re.match(r"^[a-z]+$", line) and line != "vtk":
