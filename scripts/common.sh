@@ -54,8 +54,11 @@ softshadows_install_packages() {
     sudo=(sudo)
   fi
   echo "Installing: ${missing[*]}" >&2
-  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update
-  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y "${missing[@]}"
+  # Waiting for the package database if another install holds it (CI
+  # prepares other releases' roots while it installs here).
+  local wait=(-o DPkg::Lock::Timeout=600)
+  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get "${wait[@]}" update
+  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get "${wait[@]}" install -y "${missing[@]}"
 }
 
 # The build folder NAME (default build) of the checkout, e.g. build-paraview.
