@@ -18,11 +18,15 @@
 #include <vtkSTLReader.h>
 #include <vtksys/SystemTools.hxx>
 
+#include <cmath>
 #include <cstdint>
+#include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <memory>
 #include <new>
+#include <sstream>
 #include <stdexcept>
 
 namespace softshadows
@@ -85,14 +89,72 @@ vtkSmartPointer<vtkAlgorithm> MakeObjReader(
   return MakeReader<vtkOBJReader>(copy->Path());
 }
 
+// The first vertex coordinate of an STL file that is not a finite number,
+// in words, or empty: vtkSTLReader merges the points it read through a point
+// locator whose buckets come from their bounds, and with an infinite or NaN
+// coordinate it indexes past them, corrupting memory (found by fuzzing).
+std::string FindStlNonFinite(const std::string& bytes, bool binary)
+{
+  auto problem = [](std::int64_t triangle, float value)
+  {
+    return "triangle " + std::to_string(triangle) + " has a vertex coordinate " +
+      std::to_string(value) + ": NaN and infinite coordinates are not supported";
+  };
+  if (binary)
+  {
+    // 80 bytes of header, a count, then 50 bytes a triangle: its normal,
+    // its three vertices (float32, little-endian) and two bytes.
+    for (std::size_t at = 84, triangle = 0; at + 50 <= bytes.size(); at += 50, ++triangle)
+    {
+      for (int k = 3; k < 12; ++k)
+      {
+        unsigned char b[4];
+        std::memcpy(b, bytes.data() + at + 4 * k, 4);
+        const std::uint32_t bits = static_cast<std::uint32_t>(b[0]) |
+          static_cast<std::uint32_t>(b[1]) << 8 | static_cast<std::uint32_t>(b[2]) << 16 |
+          static_cast<std::uint32_t>(b[3]) << 24;
+        float value;
+        std::memcpy(&value, &bits, 4);
+        if (!std::isfinite(value))
+        {
+          return problem(static_cast<std::int64_t>(triangle), value);
+        }
+      }
+    }
+    return std::string();
+  }
+  // Text: the three numbers after each "vertex".
+  std::istringstream words(bytes);
+  std::string word;
+  std::int64_t vertices = 0;
+  while (words >> word)
+  {
+    if (word != "vertex")
+    {
+      continue;
+    }
+    for (int k = 0; k < 3 && words >> word; ++k)
+    {
+      const float value = std::strtof(word.c_str(), nullptr);
+      if (!std::isfinite(value))
+      {
+        return problem(vertices / 3, value);
+      }
+    }
+    ++vertices;
+  }
+  return std::string();
+}
+
 // VTK 9.1's vtkSTLReader reads a file it does not take for text as binary
 // STL and allocates for the triangle count of its header when that exceeds
 // what the file holds (as an int; counts below are "bogus" and ignored):
 // a truncated file or stray bytes would have it allocate gigabytes.
 vtkSmartPointer<vtkAlgorithm> MakeStlReader(const std::filesystem::path& file)
 {
-  if (vtksys::SystemTools::DetectFileType(file.string().c_str()) !=
-    vtksys::SystemTools::FileTypeText)
+  const bool binary =
+    vtksys::SystemTools::DetectFileType(file.string().c_str()) != vtksys::SystemTools::FileTypeText;
+  if (binary)
   {
     std::ifstream in(file, std::ios::binary);
     unsigned char count[4] = {};
@@ -109,6 +171,11 @@ vtkSmartPointer<vtkAlgorithm> MakeStlReader(const std::filesystem::path& file)
           " triangles, but the file holds " + std::to_string(held));
       }
     }
+  }
+  const std::string problem = FindStlNonFinite(ReadBytes(file), binary);
+  if (!problem.empty())
+  {
+    throw std::runtime_error(problem);
   }
   return MakeReader<vtkSTLReader>(file);
 }

@@ -56,6 +56,7 @@ expected = {
     "obj_long_material_name.obj": "a material name of 150 characters",
     "obj_nul_byte.obj": "byte 16 is a NUL",
     "stl_huge_count.stl": "header gives 100000000 triangles, but the file holds 1",
+    "stl_infinite_vertex.stl": "triangle 0 has a vertex coordinate inf: NaN and infinite",
     "vtp_claimed_points.vtp": "it claims 288230376151711744 points and 1 cells, whose arrays need more than its",
     "vtp_last_offset.vtp": "its last cell offset, 1000000000000, asks for more connectivity than its",
     "vtp_first_piece_components.vtp": "it claims 3 points and 1 cells, whose arrays need more than its",
