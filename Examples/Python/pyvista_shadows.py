@@ -2,8 +2,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """A PyVista plotter with the module's soft shadows: a ball and a torus over a
 floor, lit by a pyvista.Light spot light of radius 0.3, with contact-hardening
-shadows and PyVista's own SSAO on top. Needs PyVista (python3-pyvista,
-Debian 13 and later).
+shadows. Needs PyVista (python3-pyvista, Debian 13 and later).
 
     PYTHONPATH=build/lib/python3/dist-packages \\
       xvfb-run -a /usr/bin/python3 Examples/Python/pyvista_shadows.py [OUTPUT.png] [--plain]
@@ -36,12 +35,11 @@ plotter.add_mesh(pv.ParametricTorus(ringradius=0.45, crosssectionradius=0.15)
 plotter.add_light(pv.Light(position=(1.0, 5.0, 0.5), focal_point=(0, 0, 0), positional=True,
                            cone_angle=45, light_type="scene light"))
 plotter.camera_position = [(0.0, 5.0, 7.0), (0.0, 0.5, 0.0), (0.0, 1.0, 0.0)]
-plotter.enable_ssao(radius=0.3)  # PyVista's passes wrap the shadowed picture
 
 if "--plain" not in sys.argv:
     # Every light without a size gets light_radius (world units for spot and
     # point lights); the parameters are the scene files' ("contact": {...}).
-    shadows = enable_soft_shadows(plotter, "contact", light_radius=0.3, map_size=2048)
+    enable_soft_shadows(plotter, "contact", light_radius=0.3, map_size=2048)
     # With PyVista 0.48 and later, importing vtksoftshadows.pyvista also
     # gives plotter.enable_soft_shadows(...) and plotter.soft_shadows.
 

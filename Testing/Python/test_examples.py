@@ -19,6 +19,11 @@ examples = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", 
                         "Python")
 SHADOWED = ("shadowed_scene", "point_light_room", "silhouette_fence", "smoothies_cylinder",
             "aliasfree_area_light", "reader_pipeline")
+try:
+    import pyvista  # noqa: F401
+    SHADOWED += ("pyvista_shadows",)  # Debian 13 and later
+except ImportError:
+    print("PyVista is not installed: pyvista_shadows.py not run")
 
 
 def run(name, *args):
