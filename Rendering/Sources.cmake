@@ -36,7 +36,8 @@ set(softshadows_rendering_framework_headers
 
 # Internals: a technique's helpers, not installed.
 set(softshadows_rendering_private_classes
-  vtkAliasFreeBentNormals)
+  vtkAliasFreeBentNormals
+  vtkShadowGlyphInstances)
 
 # Header-only internals.
 set(softshadows_rendering_private_headers

@@ -148,7 +148,17 @@ std::vector<Surface> CollectSurfaces(vtkRenderer* renderer, double bounds[6])
   std::vector<Surface> surfaces;
   for (const vtkShadowCaster& caster : casters.GetCasters())
   {
-    AddPolyData(caster.Data, caster.ModelToWorld, caster.Opaque, surfaces);
+    if (caster.Faces)
+    {
+      AddPolyData(caster.Data, caster.ModelToWorld, true, surfaces);
+    }
+  }
+  for (const vtkShadowCaster& caster : casters.GetTranslucent())
+  {
+    if (caster.Faces)
+    {
+      AddPolyData(caster.Data, caster.ModelToWorld, false, surfaces);
+    }
   }
   return surfaces;
 }

@@ -13,13 +13,16 @@
 #include "vtkDataObjectTree.h"
 #include "vtkDataObjectTreeIterator.h"
 #include "vtkDataSetMapper.h"
+#include "vtkGlyph3DMapper.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderer.h"
+#include "vtkShadowGlyphInstances.h"
 #include "vtkShadowMatrices.h"
 #include "vtkShadowVTKVersion.h"
 #include "vtkSmartPointer.h"
@@ -43,11 +46,21 @@ glm::dvec3 vtkShadowCaster::DirectionToModel(const glm::dvec3& world) const
 }
 
 //------------------------------------------------------------------------------
-void vtkShadowCasterRegistry::AddBlocks(vtkDataObject* node, bool visible, unsigned int& flatIndex,
-  vtkCompositeDataDisplayAttributes* attributes, const vtkShadowCaster& actor)
+vtkShadowCasterRegistry::vtkShadowCasterRegistry()
+  : Glyphs(new vtkShadowGlyphInstances)
+{
+}
+
+vtkShadowCasterRegistry::~vtkShadowCasterRegistry() = default;
+
+//------------------------------------------------------------------------------
+void vtkShadowCasterRegistry::AddBlocks(vtkDataObject* node, bool visible, bool opaque,
+  unsigned int& flatIndex, vtkCompositeDataDisplayAttributes* attributes,
+  const vtkShadowCaster& actor)
 {
   // Flat indices count every node, empty ones too, depth first, as the
-  // composite mapper's do; a block's visibility is inherited by its children.
+  // composite mapper's do; a block's visibility and opacity are inherited
+  // by its children, and its own replace them.
   const unsigned int index = flatIndex++;
   if (!node)
   {
@@ -56,6 +69,10 @@ void vtkShadowCasterRegistry::AddBlocks(vtkDataObject* node, bool visible, unsig
   if (attributes && attributes->HasBlockVisibility(node))
   {
     visible = attributes->GetBlockVisibility(node);
+  }
+  if (attributes && attributes->HasBlockOpacity(node))
+  {
+    opaque = attributes->GetBlockOpacity(node) >= 1.0;
   }
   if (auto* tree = vtkDataObjectTree::SafeDownCast(node))
   {
@@ -66,7 +83,8 @@ void vtkShadowCasterRegistry::AddBlocks(vtkDataObject* node, bool visible, unsig
     child->SkipEmptyNodesOff();
     for (child->InitTraversal(); !child->IsDoneWithTraversal(); child->GoToNextItem())
     {
-      this->AddBlocks(child->GetCurrentDataObject(), visible, flatIndex, attributes, actor);
+      this->AddBlocks(
+        child->GetCurrentDataObject(), visible, opaque, flatIndex, attributes, actor);
     }
     return;
   }
@@ -76,12 +94,12 @@ void vtkShadowCasterRegistry::AddBlocks(vtkDataObject* node, bool visible, unsig
     vtkShadowCaster block = actor;
     block.Data = data;
     block.FlatIndex = index;
-    this->AddCaster(block);
+    this->AddCaster(block, opaque);
   }
 }
 
 //------------------------------------------------------------------------------
-void vtkShadowCasterRegistry::AddCaster(const vtkShadowCaster& caster)
+void vtkShadowCasterRegistry::AddCaster(vtkShadowCaster caster, bool opaque)
 {
   Checked& check = this->Checks[caster.Data];
   if (check.Data != caster.Data || check.Time != caster.Data->GetMTime())
@@ -97,14 +115,24 @@ void vtkShadowCasterRegistry::AddCaster(const vtkShadowCaster& caster)
           << problem.c_str());
     }
   }
-  if (check.Valid)
-  {
-    this->Casters.push_back(caster);
-  }
-  else
+  if (!check.Valid)
   {
     ++this->Refused;
+    return;
   }
+  vtkPolyData* data = caster.Data;
+  caster.Faces = caster.Faces && data->GetNumberOfPolys() + data->GetNumberOfStrips() > 0;
+  if (!opaque)
+  {
+    this->Translucent.push_back(caster);
+    return;
+  }
+  // Lines and vertices, or faces not drawn filled, cast through the depth map.
+  if (!caster.Faces || data->GetNumberOfLines() + data->GetNumberOfVerts() > 0)
+  {
+    this->FacesOnly = false;
+  }
+  this->Casters.push_back(caster);
 }
 
 //------------------------------------------------------------------------------
@@ -112,10 +140,13 @@ void vtkShadowCasterRegistry::Update(vtkRenderer* renderer)
 {
   this->Props.clear();
   this->Casters.clear();
+  this->DepthMapProps.clear();
+  this->Translucent.clear();
   for (auto it = this->Checks.begin(); it != this->Checks.end();)
   {
     it = it->second.Data ? std::next(it) : this->Checks.erase(it);
   }
+  this->Glyphs->Prune();
   vtkCollectionSimpleIterator it;
   vtkPropCollection* props = renderer->GetViewProps();
   props->InitTraversal(it);
@@ -140,10 +171,19 @@ void vtkShadowCasterRegistry::Update(vtkRenderer* renderer)
     // A prop with a refused part casts nothing: light-space draws would
     // send the bad ids to the GPU through VTK's mapper.
     const int refused = this->Refused;
+    const size_t casters = this->Casters.size(), translucent = this->Translucent.size();
+    this->FacesOnly = true;
     this->AddActors(prop);
-    if (this->Refused == refused)
+    if (this->Refused != refused)
     {
-      this->Props.push_back(prop);
+      this->Casters.resize(casters);
+      this->Translucent.resize(translucent);
+      continue;
+    }
+    this->Props.push_back(prop);
+    if (!this->FacesOnly)
+    {
+      this->DepthMapProps.push_back(prop);
     }
   }
 }
@@ -153,7 +193,8 @@ void vtkShadowCasterRegistry::AddActors(vtkProp* prop)
 {
   // The actors `prop` draws: itself, an assembly's visible parts (their
   // matrices composed along the path), or the parts a composite prop lists
-  // (vtkAxesActor's, placed by their own matrices).
+  // (vtkAxesActor's, placed by their own matrices). Props that are not
+  // actors (image slices, volumes, 2D props) draw what no caster lists.
   vtkNew<vtkPropCollection> parts;
   prop->InitPathTraversal();
   while (vtkAssemblyPath* path = prop->GetNextPath())
@@ -169,8 +210,12 @@ void vtkShadowCasterRegistry::AddActors(vtkProp* prop)
       this->AddActor(prop, actor, node->GetMatrix() ? node->GetMatrix() : actor->GetMatrix());
       continue;
     }
+    // Asked what it draws, a composite prop places its parts (vtkAxesActor
+    // does so only when drawn or asked, which the renderer does later).
+    leaf->HasTranslucentPolygonalGeometry();
     parts->RemoveAllItems();
     leaf->GetActors(parts);
+    bool listed = false;
     vtkCollectionSimpleIterator it;
     parts->InitTraversal(it);
     while (vtkProp* part = parts->GetNextProp(it))
@@ -179,48 +224,75 @@ void vtkShadowCasterRegistry::AddActors(vtkProp* prop)
       if (part != leaf && actor && actor->GetVisibility())
       {
         this->AddActor(prop, actor, actor->GetMatrix());
+        listed = true;
       }
     }
+    this->FacesOnly = this->FacesOnly && listed;
   }
 }
 
 //------------------------------------------------------------------------------
 void vtkShadowCasterRegistry::AddActor(vtkProp* prop, vtkActor* actor, vtkMatrix4x4* matrix)
 {
-  // Polydata mappers, and vtkDataSetMapper (PyVista's add_mesh() draws
-  // with it), which draws polydata as they do and other datasets' surfaces
-  // through a polydata mapper of its own, made at its first render.
-  vtkMapper* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
-  if (auto* datasetMapper = vtkDataSetMapper::SafeDownCast(actor->GetMapper()))
-  {
-    mapper = vtkPolyData::SafeDownCast(datasetMapper->GetInputDataObject(0, 0))
-      ? static_cast<vtkMapper*>(datasetMapper)
-      : datasetMapper->GetPolyDataMapper();
-  }
-  if (!mapper)
-  {
-    return;
-  }
   vtkShadowCaster caster;
   caster.Prop = prop;
   caster.Actor = actor;
-  caster.Opaque = actor->HasOpaqueGeometry() != 0;
   caster.ModelToWorld = vtkShadowMatrices::FromVTK(matrix);
   caster.WorldToModel = glm::inverse(caster.ModelToWorld);
+  // Faces are drawn filled by the Surface representation, except by the
+  // mappers that draw each point as an imposter whatever the cells.
+  vtkMapper* mapper = actor->GetMapper();
+  caster.Faces = actor->GetProperty()->GetRepresentation() == VTK_SURFACE && mapper &&
+    !mapper->IsA("vtkOpenGLSphereMapper") && !mapper->IsA("vtkOpenGLStickMapper") &&
+    !mapper->IsA("vtkPointGaussianMapper");
+  const bool opaque = actor->HasOpaqueGeometry() != 0;
 
+  // Glyph mappers: every instance, placed as the mapper places it.
+  if (auto* glyphs = vtkGlyph3DMapper::SafeDownCast(mapper))
+  {
+    if (vtkPolyData* instances = this->Glyphs->Get(glyphs))
+    {
+      caster.Data = instances;
+      this->AddCaster(caster, opaque);
+    }
+    else
+    {
+      this->FacesOnly = false; // without a source, VTK's mapper draws a line
+    }
+    return;
+  }
+  // Polydata mappers, and vtkDataSetMapper (PyVista's add_mesh() draws
+  // with it), which draws polydata as they do and other datasets' surfaces
+  // through a polydata mapper of its own, made at its first render.
+  vtkMapper* drawing = vtkPolyDataMapper::SafeDownCast(mapper);
+  if (auto* datasetMapper = vtkDataSetMapper::SafeDownCast(mapper))
+  {
+    drawing = vtkPolyData::SafeDownCast(datasetMapper->GetInputDataObject(0, 0))
+      ? static_cast<vtkMapper*>(datasetMapper)
+      : datasetMapper->GetPolyDataMapper();
+  }
+  if (!drawing)
+  {
+    this->FacesOnly = false; // a mapper of its own kind (molecules, ...)
+    return;
+  }
   // The input is up to date: the renderer asked the mappers for bounds.
-  vtkDataObject* input = mapper->GetInputDataObject(0, 0);
+  vtkDataObject* input = drawing->GetInputDataObject(0, 0);
   if (auto* data = vtkPolyData::SafeDownCast(input))
   {
     caster.Data = data;
-    this->AddCaster(caster);
+    this->AddCaster(caster, opaque);
     return;
   }
-  auto* attributes = vtkShadowVTKVersion::CompositeDisplayAttributes(mapper);
-  if (vtkCompositeDataSet::SafeDownCast(input) && attributes)
+  // Composite mappers draw every block unless display attributes (which
+  // may be unset) say otherwise.
+  if (vtkCompositeDataSet::SafeDownCast(input) &&
+    vtkShadowVTKVersion::CompositeMapper::SafeDownCast(drawing))
   {
+    auto* attributes = vtkShadowVTKVersion::CompositeDisplayAttributes(drawing);
     unsigned int flatIndex = 0;
-    this->AddBlocks(input, true, flatIndex, attributes, caster);
+    this->AddBlocks(input, true, opaque && actor->GetProperty()->GetOpacity() >= 1.0, flatIndex,
+      attributes, caster);
   }
 }
 

@@ -2,27 +2,42 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkShadowCasterRegistry
- * @brief   Every shadow caster of a frame: the visible props, and the
- *          polydata VTK's OpenGL polydata mappers draw for them, with their
- *          model matrices.
+ * @brief   What casts shadows this frame, and how: the one place that
+ *          decides it for every technique.
  *
  * Part of the framework, refreshed at the start of every frame
- * (vtkSoftShadowPass::Render()). GetProps() are what light-space draws
- * render through VTK's mappers; GetCasters() give a technique each
- * polydata (each visible block of VTK's composite mapper, block
- * visibility inherited as the mapper does; each visible part of a
- * vtkAssembly, and of composite props that list their parts, such as
- * vtkAxesActor) to derive
- * its own data from (a topology aware mesh, an edge table, a silhouette
- * tree), cached with vtkShadowCasterCache until the data changes, and
- * lights expressed in the caster's model space for per-mesh filters such as
- * vtkLightSilhouetteFilter. Glyph mappers' instances are not reached: their
- * props still cast through GetProps(). Light and camera actors (vtkLightActor,
- * vtkCameraActor), pictures of the scene's lights and cameras, cast nothing.
- * Props without bounds (a mapper without input) are left out, as the
- * renderer's culler leaves them out. Polydata that vtkSoftShadowsMeshCheck refuses (point ids out
- * of range, non-finite points) casts nothing either, with one error naming the actor each time the
- * data changes.
+ * (vtkSoftShadowPass::Render()). The rule, the same in every technique:
+ * what an actor draws is what it casts.
+ * - GetProps(): the visible props, which light-space draws render through
+ *   VTK's own mappers (the light's depth map: everything opaque casts
+ *   there as it is drawn, lines, points, imposters, glyphs and image
+ *   slices too).
+ * - GetCasters(): each polydata an opaque, visible actor draws (each visible
+ *   block of a composite mapper, block visibility and opacity inherited as
+ *   the mapper does; each visible part of a vtkAssembly, and of composite
+ *   props that list their parts, such as vtkAxesActor; a vtkGlyph3DMapper's
+ *   instances, each at its own transform, as one mesh; vtkDataSetMapper's
+ *   surface) with its model matrix, for techniques that derive their own
+ *   data from it (a topology aware mesh, an edge table, triangles),
+ *   cached with vtkShadowCasterCache until the data changes. Its Faces flag
+ *   says whether the actor draws the polygons and strips filled: faces
+ *   drawn as wireframe or points, and imposter mappers (spheres, sticks,
+ *   point Gaussians), cast only what they draw, through the depth map.
+ * - GetDepthMapProps(): the props that draw something techniques cannot
+ *   take as faces (lines, points, faces not drawn filled, mappers other
+ *   than polydata mappers): techniques that do not draw the whole scene's
+ *   depth map themselves draw these into one, so that they cast as `hard`
+ *   casts them.
+ * - Translucent actors and blocks are drawn and receive shadows but cast
+ *   none, as in VTK: they are not casters; GetTranslucent() lists their
+ *   polydata for those that need every drawn surface (the ray-cast truth).
+ *   Hidden actors, parts and blocks cast nothing.
+ * Light and camera actors (vtkLightActor, vtkCameraActor), pictures of the
+ * scene's lights and cameras, cast nothing. Props without bounds (a mapper
+ * without input) are left out, as the renderer's culler leaves them out.
+ * Polydata that vtkSoftShadowsMeshCheck refuses (point ids out of range,
+ * non-finite points) casts nothing either, with one error naming the actor
+ * each time the data changes.
  */
 
 #ifndef vtkShadowCasterRegistry_h
@@ -38,11 +53,13 @@
 
 #include <functional> // for std::function
 #include <map>        // for std::map
+#include <memory>     // for std::unique_ptr
 #include <set>        // for std::set
 #include <vector>     // for std::vector
 
 class vtkActor;
 class vtkCompositeDataDisplayAttributes;
+class vtkShadowGlyphInstances;
 class vtkDataObject;
 class vtkMatrix4x4;
 class vtkPolyData;
@@ -58,7 +75,11 @@ struct VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowCaster
   unsigned int FlatIndex = 0;     ///< the block's flat index in a composite input; 0 otherwise
   glm::dmat4 ModelToWorld{ 1.0 }; ///< the actor's matrix, an assembly's composed in
   glm::dmat4 WorldToModel{ 1.0 };
-  bool Opaque = true; ///< the actor is drawn in the opaque pass
+  /// The actor draws Data's polygons and strips filled (representation
+  /// Surface, edges shown or not, by a mapper that draws faces): techniques
+  /// that take triangles take these. Its lines and vertices, and faces
+  /// drawn otherwise, cast through the light's depth map only.
+  bool Faces = true;
 
   /// A world point (a light's position) in this caster's model coordinates.
   glm::dvec3 PointToModel(const glm::dvec3& world) const;
@@ -69,13 +90,22 @@ struct VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowCaster
 class VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowCasterRegistry
 {
 public:
+  vtkShadowCasterRegistry();
+  ~vtkShadowCasterRegistry();
+  vtkShadowCasterRegistry(const vtkShadowCasterRegistry&) = delete;
+  vtkShadowCasterRegistry& operator=(const vtkShadowCasterRegistry&) = delete;
+
   /// Collect this frame's casters from the renderer's visible props.
   void Update(vtkRenderer* renderer);
 
   /// Every visible prop, in the view or not.
   const std::vector<vtkProp*>& GetProps() const { return this->Props; }
-  /// The polydata of the visible actors drawn by polydata mappers.
+  /// The polydata opaque visible actors draw, which cast.
   const std::vector<vtkShadowCaster>& GetCasters() const { return this->Casters; }
+  /// The props among GetProps() that draw anything not listed as faces.
+  const std::vector<vtkProp*>& GetDepthMapProps() const { return this->DepthMapProps; }
+  /// The polydata translucent visible actors and blocks draw: they cast nothing.
+  const std::vector<vtkShadowCaster>& GetTranslucent() const { return this->Translucent; }
 
   /**
    * A caster's faces (polygons and strips, not lines or points) with its
@@ -88,15 +118,20 @@ public:
   static vtkSmartPointer<vtkPolyData> MergedFaces(vtkPolyData* data);
 
 private:
-  /// Adds `caster` unless vtkSoftShadowsMeshCheck refuses its data.
-  void AddCaster(const vtkShadowCaster& caster);
+  /// Adds `caster` (to the translucent ones unless `opaque`) unless
+  /// vtkSoftShadowsMeshCheck refuses its data.
+  void AddCaster(vtkShadowCaster caster, bool opaque);
   void AddActors(vtkProp* prop);
   void AddActor(vtkProp* prop, vtkActor* actor, vtkMatrix4x4* matrix);
-  void AddBlocks(vtkDataObject* node, bool visible, unsigned int& flatIndex,
+  void AddBlocks(vtkDataObject* node, bool visible, bool opaque, unsigned int& flatIndex,
     vtkCompositeDataDisplayAttributes* attributes, const vtkShadowCaster& actor);
 
   std::vector<vtkProp*> Props;
   std::vector<vtkShadowCaster> Casters;
+  std::vector<vtkProp*> DepthMapProps;
+  std::vector<vtkShadowCaster> Translucent;
+  bool FacesOnly = true; ///< the prop being added draws faces only, so far
+  std::unique_ptr<vtkShadowGlyphInstances> Glyphs;
 
   /// Each polydata's check, kept until it is modified: refused and reported once.
   struct Checked

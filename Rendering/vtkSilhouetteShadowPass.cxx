@@ -212,13 +212,14 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
   auto& lights = this->Maps->GetLights();
   const bool soft = this->Variant == Soft;
 
-  // Each caster's TAM, rebuilt only when its polydata changes. Casters
-  // without polygons have none: their depth-map shadow is all they cast.
+  // Each caster's TAM, rebuilt only when its polydata changes. What is not
+  // drawn as filled faces (lines, points, wireframe, imposters) has none:
+  // its depth-map shadow is all it casts.
   std::vector<std::pair<const vtkShadowCaster*, vtkShadowGeometry*>> meshes;
   this->TopologyAwareMeshVertices = 0;
   for (const vtkShadowCaster& caster : this->Casters->GetCasters())
   {
-    if (caster.Data->GetNumberOfPolys() + caster.Data->GetNumberOfStrips() == 0)
+    if (!caster.Faces)
     {
       continue;
     }

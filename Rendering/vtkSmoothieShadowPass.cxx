@@ -391,13 +391,15 @@ bool vtkSmoothieShadowPass::RenderShadowMaps(const vtkRenderState* s)
   auto& lights = this->Maps->GetLights();
 
   // Each caster's silhouette edges for each light, found again only when
-  // the light moved in the caster's model space.
+  // the light moved in the caster's model space. What is not drawn as
+  // filled faces (lines, points, wireframe, imposters) casts its depth-map
+  // shadow only.
   const auto start = std::chrono::steady_clock::now();
   std::vector<std::pair<const vtkShadowCaster*, CasterEdges*>> casters;
   this->NumberOfSilhouetteEdges = 0;
   for (const vtkShadowCaster& caster : this->Casters->GetCasters())
   {
-    if (caster.Data->GetNumberOfPolys() + caster.Data->GetNumberOfStrips() == 0)
+    if (!caster.Faces)
     {
       continue;
     }
