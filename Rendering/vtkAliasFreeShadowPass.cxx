@@ -252,6 +252,7 @@ struct vtkAliasFreeShadowPass::Internals
     std::string(vtkAliasFreeLookup) + "\n" + vtkAliasFreeCastersFS, "#define ALIASFREE_SOFT\n");
   bool Failed = false; ///< a shader did not build: reported once
   bool MemoryReported = false;
+  bool BeyondFaces = false; ///< this frame's lights have maps of what casts beyond faces
 
   bool BuildPrograms(vtkAliasFreeShadowPass* pass)
   {
@@ -332,7 +333,68 @@ bool vtkAliasFreeShadowPass::RenderShadowMaps(const vtkRenderState* s)
 {
   // The light's own depth map serves only what has no view sample:
   // translucent surfaces.
-  return this->RenderLightDepthMaps(s, false);
+  if (!this->RenderLightDepthMaps(s, false))
+  {
+    return false;
+  }
+  // What the triangle tests cannot take (lines, points, imposters, faces
+  // drawn as wireframe) casts as `hard` casts it, through a depth map of
+  // its own: every view sample's visibility is the lesser of the two.
+  Internals& in = *this->Internal;
+  in.BeyondFaces = !this->Casters->GetDepthMapProps().empty();
+  if (!in.BeyondFaces)
+  {
+    return true;
+  }
+  auto* context = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
+  for (auto& light : this->Maps->GetLights())
+  {
+    light.Textures.resize(1);
+    const bool drawn = light.Point
+      ? (vtkShadowMapManager::AllocateCube(
+           context, light.Textures[0], this->MapSize, this->PackedCubeMaps),
+          this->RenderDistanceCube(s, light.Faces, light.Textures[0], true))
+      : (vtkShadowMapManager::AllocateDepth(context, light.Textures[0], this->MapSize, false),
+          this->RenderDepthMap(s, light.Map, light.Textures[0], true));
+    if (!drawn)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+std::vector<vtkSoftShadowPass::ReceiverTexture> vtkAliasFreeShadowPass::GetReceiverTextures()
+{
+  std::vector<ReceiverTexture> textures;
+  const auto& lights = this->Maps->GetLights();
+  for (size_t slot = 0; this->Internal->BeyondFaces && slot < lights.size(); ++slot)
+  {
+    textures.push_back({ "aliasfreeBeyondFaces" + std::to_string(slot),
+      lights[slot].Point ? "samplerCube" : "sampler2DShadow", lights[slot].Textures[0] });
+  }
+  return textures;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkAliasFreeShadowPass::GetVisibilityExpression(int slot)
+{
+  const std::string exact = this->Superclass::GetVisibilityExpression(slot);
+  if (!this->Internal->BeyondFaces)
+  {
+    return exact;
+  }
+  const auto& light = this->Maps->GetLights()[slot];
+  const std::string i = std::to_string(slot), m = std::to_string(light.MapIndex);
+  const std::string map = "aliasfreeBeyondFaces" + i;
+  const std::string beyond = light.Point
+    ? "vtkShadowCubeLookup(" + map + ", vtkShadowCubeCenter[" + m +
+      "], vtkShadowPositionWC, vtkShadowNormalWC, vtkShadowCubeTexel, vtkShadowNormalBias, "
+      "vtkShadowDistanceBias, vtkShadowCubeRange[" + m + "], vtkShadowPCFRadius)"
+    : "vtkShadowLookup(" + map + ", vtkShadowWorldToMap[" + i + "], vtkShadowReceiver(" + i +
+      ", vtkShadowPositionWC, vtkShadowNormalWC), vtkShadowPCFRadius)";
+  return "min(" + exact + ", " + beyond + ")";
 }
 
 //------------------------------------------------------------------------------
@@ -757,7 +819,7 @@ bool vtkAliasFreeShadowPass::RenderFrustum(
       setup.Draw = vtkShadowDrawSetup::Props::None;
       for (const vtkShadowCaster& caster : this->Casters->GetCasters())
       {
-        if (caster.Data->GetNumberOfPolys() + caster.Data->GetNumberOfStrips() == 0)
+        if (!caster.Faces)
         {
           continue;
         }

@@ -222,6 +222,11 @@ protected:
   void ReceiversDrawn() override;
   /// Bent normals' two texture buffers, read by the receivers' vertex shaders.
   int GetReceiverTexturesPerFrame() const override { return this->BentNormals ? 2 : 0; }
+  /// The map of what casts beyond faces (lines, points): kept for every
+  /// light, so that the lights shadowed do not depend on the scene's actors.
+  int GetReceiverTexturesPerLight(bool) const override { return 1; }
+  std::vector<ReceiverTexture> GetReceiverTextures() override;
+  std::string GetVisibilityExpression(int slot) override;
 
   int Variant = Soft;
   int NumberOfLightSamples = 256;

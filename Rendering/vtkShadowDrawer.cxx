@@ -265,6 +265,10 @@ bool vtkShadowDrawer::Draw(const vtkRenderState* s, const vtkShadowDrawSetup& se
     {
       props = this->Casters.GetProps();
     }
+    else if (setup.Draw == vtkShadowDrawSetup::Props::DepthMapCasters)
+    {
+      props = this->Casters.GetDepthMapProps();
+    }
     else
     {
       props.assign(s->GetPropArray(), s->GetPropArray() + s->GetPropArrayCount());

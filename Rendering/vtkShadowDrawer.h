@@ -51,8 +51,10 @@ struct VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowDrawSetup
   enum class Props
   {
     Casters, ///< every visible prop, in the view or not: they may shadow what is
-    Camera,  ///< the props of the render state (what the camera pass draws)
-    None     ///< only Geometry
+    /// the casters that draw more than faces (vtkShadowCasterRegistry::GetDepthMapProps())
+    DepthMapCasters,
+    Camera, ///< the props of the render state (what the camera pass draws)
+    None    ///< only Geometry
   };
   enum class Blending
   {

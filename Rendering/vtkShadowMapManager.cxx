@@ -359,18 +359,18 @@ vtkShadowMapManager::Frustum vtkShadowMapManager::FitFrustum(
 }
 
 //------------------------------------------------------------------------------
-void vtkShadowMapManager::AllocateDepthMap(
-  vtkOpenGLRenderWindow* context, Light& light, int size, bool linear)
+void vtkShadowMapManager::AllocateDepth(
+  vtkOpenGLRenderWindow* context, vtkSmartPointer<vtkTextureObject>& texture, int size, bool linear)
 {
-  vtkTextureObject* map = light.DepthMap;
+  vtkTextureObject* map = texture;
   const int filter = linear ? vtkTextureObject::Linear : vtkTextureObject::Nearest;
   if (map && map->GetContext() == context && static_cast<int>(map->GetWidth()) == size &&
     map->GetMagnificationFilter() == filter)
   {
     return;
   }
-  light.DepthMap = vtkSmartPointer<vtkTextureObject>::New();
-  map = light.DepthMap;
+  texture = vtkSmartPointer<vtkTextureObject>::New();
+  map = texture;
   map->SetContext(context);
   map->SetWrapS(vtkTextureObject::ClampToEdge);
   map->SetWrapT(vtkTextureObject::ClampToEdge);
@@ -382,17 +382,17 @@ void vtkShadowMapManager::AllocateDepthMap(
 }
 
 //------------------------------------------------------------------------------
-void vtkShadowMapManager::AllocateCubeMap(
-  vtkOpenGLRenderWindow* context, Light& light, int size, bool packed)
+void vtkShadowMapManager::AllocateCube(
+  vtkOpenGLRenderWindow* context, vtkSmartPointer<vtkTextureObject>& texture, int size, bool packed)
 {
-  vtkTextureObject* cube = light.CubeMap;
+  vtkTextureObject* cube = texture;
   if (cube && cube->GetContext() == context && static_cast<int>(cube->GetWidth()) == size &&
     (cube->GetComponents() == 4) == packed)
   {
     return;
   }
-  light.CubeMap = vtkSmartPointer<vtkTextureObject>::New();
-  cube = light.CubeMap;
+  texture = vtkSmartPointer<vtkTextureObject>::New();
+  cube = texture;
   cube->SetContext(context);
   cube->SetMinificationFilter(vtkTextureObject::Nearest);
   cube->SetMagnificationFilter(vtkTextureObject::Nearest);

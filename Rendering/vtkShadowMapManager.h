@@ -152,14 +152,28 @@ public:
    * Make sure `light.CubeMap` is a `size`^2 cube map, single-channel float or
    * (`packed`) RGBA8; nearest filtering: it holds distances, not colours.
    */
-  void AllocateCubeMap(vtkOpenGLRenderWindow* context, Light& light, int size, bool packed);
+  void AllocateCubeMap(vtkOpenGLRenderWindow* context, Light& light, int size, bool packed)
+  {
+    AllocateCube(context, light.CubeMap, size, packed);
+  }
 
   /**
    * Make sure `light.DepthMap` is a `size` x `size` depth texture with
    * hardware comparison (sampler2DShadow), filtered bilinearly (2x2 PCF in
    * one tap) when `linear`.
    */
-  void AllocateDepthMap(vtkOpenGLRenderWindow* context, Light& light, int size, bool linear);
+  void AllocateDepthMap(vtkOpenGLRenderWindow* context, Light& light, int size, bool linear)
+  {
+    AllocateDepth(context, light.DepthMap, size, linear);
+  }
+
+  ///@{
+  /// The same for any texture a technique keeps (say, in Light::Textures).
+  static void AllocateCube(vtkOpenGLRenderWindow* context,
+    vtkSmartPointer<vtkTextureObject>& cube, int size, bool packed);
+  static void AllocateDepth(vtkOpenGLRenderWindow* context,
+    vtkSmartPointer<vtkTextureObject>& map, int size, bool linear);
+  ///@}
 
   /**
    * Upload what shaders need of a frustum for lookups with normal offset

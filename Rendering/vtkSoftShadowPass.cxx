@@ -82,7 +82,8 @@ std::string SurfaceCode(const std::string& fragmentShader)
                      "  vec3 vtkShadowNormalWC;\n"
                      "  bool vtkShadowFaceDefined = vtkShadowSurface(") +
     (computed ? "vertexVC.xyz" : "vertexVCVSOutput.xyz") + ", " +
-    (shaded ? "normalVCVSOutput" : "vec3(0.0, 0.0, 1.0)") +
+    (shaded ? "normalVCVSOutput" : "vec3(0.0, 0.0, 1.0)") + ", " +
+    (vtkShadowMapperCode::MovesDepthOnly(fragmentShader) ? "true" : "false") +
     ", vtkShadowPositionWC, vtkShadowNormalWC);\n";
 }
 
@@ -713,10 +714,12 @@ bool vtkSoftShadowPass::Draw(const vtkRenderState* s, const vtkShadowDrawSetup& 
 }
 
 //------------------------------------------------------------------------------
-bool vtkSoftShadowPass::RenderDepthMap(
-  const vtkRenderState* s, const vtkShadowFrustum& frustum, vtkTextureObject* target)
+bool vtkSoftShadowPass::RenderDepthMap(const vtkRenderState* s, const vtkShadowFrustum& frustum,
+  vtkTextureObject* target, bool beyondFaces)
 {
   vtkShadowDrawSetup setup;
+  setup.Draw = beyondFaces ? vtkShadowDrawSetup::Props::DepthMapCasters
+                           : vtkShadowDrawSetup::Props::Casters;
   setup.View = &frustum;
   setup.Depth = target;
   setup.Stage = this->DepthStage.get();
@@ -737,10 +740,12 @@ bool vtkSoftShadowPass::RenderDepthMap(
 }
 
 //------------------------------------------------------------------------------
-bool vtkSoftShadowPass::RenderDistanceCube(
-  const vtkRenderState* s, const std::array<vtkShadowFrustum, 6>& faces, vtkTextureObject* cube)
+bool vtkSoftShadowPass::RenderDistanceCube(const vtkRenderState* s,
+  const std::array<vtkShadowFrustum, 6>& faces, vtkTextureObject* cube, bool beyondFaces)
 {
   vtkShadowDrawSetup setup;
+  setup.Draw = beyondFaces ? vtkShadowDrawSetup::Props::DepthMapCasters
+                           : vtkShadowDrawSetup::Props::Casters;
   setup.Faces = &faces;
   setup.Colours = { cube };
   // Nothing drawn is infinitely far (packed: the largest value): lit.

@@ -279,12 +279,14 @@ protected:
    * than the light's own (e.g. from points sampled over it): the casters'
    * depth through `frustum` into `target` with the slope-scaled and constant
    * biases; the casters' squared distances into the six faces of `cube`
-   * (layered when SinglePassCubeMaps).
+   * (layered when SinglePassCubeMaps). With `beyondFaces`, only the
+   * casters that draw more than faces (lines, points, imposters:
+   * vtkShadowCasterRegistry::GetDepthMapProps()).
    */
-  bool RenderDepthMap(
-    const vtkRenderState* s, const vtkShadowFrustum& frustum, vtkTextureObject* target);
-  bool RenderDistanceCube(
-    const vtkRenderState* s, const std::array<vtkShadowFrustum, 6>& faces, vtkTextureObject* cube);
+  bool RenderDepthMap(const vtkRenderState* s, const vtkShadowFrustum& frustum,
+    vtkTextureObject* target, bool beyondFaces = false);
+  bool RenderDistanceCube(const vtkRenderState* s, const std::array<vtkShadowFrustum, 6>& faces,
+    vtkTextureObject* cube, bool beyondFaces = false);
   ///@}
 
   /**
