@@ -85,16 +85,30 @@ vec2 silhouetteEdge(vec4 d4, vec4 z4, vec2 f, float lit, int i, out vec2 across)
   return edge;
 }
 
+// No silhouette at any of the four texels: whatever casts there has no
+// faces the technique drew (lines, points, imposters) and casts the depth
+// map's shadow alone, the four texels' mean. (Every face's shadow edge lies
+// within its silhouette's band, at least a texel diagonal wide.)
+bool silhouetteNone(vec4 d4, int i)
+{
+  return all(lessThanEqual(d4, vec4(-2.0 * silhouetteBand[i].x)));
+}
+
 #if VTK_SHADOW_MAPS > 0
 // One sample at map point p of a spot or directional light.
 float silhouetteSample(sampler2DShadow map, sampler2D silhouettes, sampler2D lookup, vec3 p,
   int i, bool soft, out float width)
 {
   float lit = dot(textureGather(map, p.xy, p.z), vec4(1.0));
+  vec4 d4 = textureGather(silhouettes, p.xy, 0);
+  if (silhouetteNone(d4, i))
+  {
+    width = 0.0;
+    return 0.25 * lit;
+  }
   vec2 f = fract(p.xy * silhouetteMapSize - 0.5);
   vec2 across;
-  vec2 edge = silhouetteEdge(textureGather(silhouettes, p.xy, 0),
-    textureGather(silhouettes, p.xy, 1), f, lit, i, across);
+  vec2 edge = silhouetteEdge(d4, textureGather(silhouettes, p.xy, 1), f, lit, i, across);
   if (across != vec2(0.0) &&
     dot(textureGather(map, p.xy + across / silhouetteMapSize, p.z), vec4(1.0)) == 0.0)
   {
@@ -145,9 +159,15 @@ float silhouetteCubeSample(samplerCube distances, samplerCube silhouettes, sampl
   vtkShadowCubeFace(v, s, t, axis);
   vec2 st = (vec2(dot(v, s), dot(v, t)) / axis * 0.5 + 0.5) * silhouetteMapSize;
   float lit = dot(vec4(greaterThanEqual(textureGather(distances, v), vec4(reference))), vec4(1.0));
+  vec4 d4 = textureGather(silhouettes, v, 0);
+  if (silhouetteNone(d4, i))
+  {
+    width = 0.0;
+    return 0.25 * lit;
+  }
   vec2 across;
-  vec2 edge = silhouetteEdge(textureGather(silhouettes, v, 0), textureGather(silhouettes, v, 1),
-    fract(st - 0.5), lit, i, across);
+  vec2 edge =
+    silhouetteEdge(d4, textureGather(silhouettes, v, 1), fract(st - 0.5), lit, i, across);
   // Texels of this face as a direction: 2 / size of the axis distance each.
   vec3 step = v + (across.x * s + across.y * t) * (2.0 * axis / silhouetteMapSize);
   if (across != vec2(0.0) &&
