@@ -11,14 +11,16 @@ uniform mat4 vtkShadowViewToWorld; // the camera's view to world matrix
 // Where it is undefined, the mapper's shading normal `normalVC`: points and
 // lines (their position does not vary across them), and imposters' edges
 // (a neighbour in the pixel quad was discarded), points drawn as spheres and
-// lines as tubes (which move only their depth, see vtkShadowDepthStage).
+// lines as tubes (`flatQuad`: they move only their depth, see vtkShadowDepthStage,
+// so their position's derivatives are those of the flat sprite or quad).
 // Returns whether the face was defined.
-bool vtkShadowSurface(vec3 positionVC, vec3 normalVC, out vec4 positionWC, out vec3 normalWC)
+bool vtkShadowSurface(
+  vec3 positionVC, vec3 normalVC, bool flatQuad, out vec4 positionWC, out vec3 normalWC)
 {
   positionWC = vtkShadowViewToWorld * vec4(positionVC, 1.0);
   vec3 face = cross(dFdx(positionVC), dFdy(positionVC));
   float size = dot(face, face);
-  bool defined = size > 0.0 && size < 1.0e30; // false for NaN too
+  bool defined = !flatQuad && size > 0.0 && size < 1.0e30; // false for NaN too
   normalWC = normalize(mat3(vtkShadowViewToWorld) * (defined ? face : normalVC));
   return defined;
 }
