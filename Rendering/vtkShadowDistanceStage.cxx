@@ -15,6 +15,11 @@
 
 #include <algorithm>
 
+namespace
+{
+const char* const FaceDepthTag = "//VTK::SoftShadow::FaceDepth";
+}
+
 //------------------------------------------------------------------------------
 void vtkShadowDistanceStage::Begin(const vtkShadowDrawSetup& setup)
 {
@@ -35,8 +40,26 @@ void vtkShadowDistanceStage::PreReplace(vtkShadowShaderSources& sources)
     std::string(vtkShadowCubeLookupFS) + "\n" + vtkShadowCubeDistanceFS + "\n" + LightDec,
     "cube-map distances");
   sources.Require(sources.Fragment, LightImpl,
-    std::string("gl_FragData[0] = vtkShadowFaceDistance();\n  return;\n  ") + LightImpl,
+    std::string("float vtkShadowWindowDepth = gl_FragCoord.z;\n  ") + FaceDepthTag +
+      "\n  gl_FragData[0] = vtkShadowFaceDistance(vtkShadowWindowDepth);\n  return;\n  " +
+      LightImpl,
     "cube-map distances");
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowDistanceStage::PostReplace(vtkShadowShaderSources& sources)
+{
+  // Imposters (sphere and stick mappers) ray-cast their surface and write
+  // its depth before the lighting code: their distance is that surface's,
+  // not their sprite's or box's. Points drawn as spheres and lines as tubes
+  // move only their depth and are kept flat, as in the depth stage.
+  std::string& fragment = sources.Fragment;
+  const size_t tag = fragment.find(FaceDepthTag);
+  const bool imposter = tag != std::string::npos &&
+    fragment.rfind("gl_FragDepth =", tag) != std::string::npos &&
+    !vtkShadowMapperCode::MovesDepthOnly(fragment);
+  vtkShaderProgram::Substitute(
+    fragment, FaceDepthTag, imposter ? "vtkShadowWindowDepth = gl_FragDepth;" : "", false);
 }
 
 //------------------------------------------------------------------------------

@@ -38,6 +38,7 @@ public:
 
   void Begin(const vtkShadowDrawSetup& setup) override;
   void PreReplace(vtkShadowShaderSources& sources) override;
+  void PostReplace(vtkShadowShaderSources& sources) override;
   void SetUniforms(vtkShaderProgram* program, vtkProp* prop) override;
 
 private:

@@ -10,10 +10,11 @@ uniform float vtkShadowFaceRange;     // 0: float map; else RGBA8, packed over t
 uniform bool vtkShadowFaceLinear;     // the depth along the axis, not the squared distance
 uniform float vtkShadowFaceSlopeBias; // linear depth: offset in texel-to-texel changes
 
-vec4 vtkShadowFaceDistance()
+// windowDepth: the fragment's window depth (gl_FragCoord.z, or an imposter's gl_FragDepth).
+vec4 vtkShadowFaceDistance(float windowDepth)
 {
   vec4 view = vtkShadowFaceClipToView *
-    vec4(gl_FragCoord.xy / vtkShadowFaceSize * 2.0 - 1.0, gl_FragCoord.z * 2.0 - 1.0, 1.0);
+    vec4(gl_FragCoord.xy / vtkShadowFaceSize * 2.0 - 1.0, windowDepth * 2.0 - 1.0, 1.0);
   view.xyz /= view.w;
   if (vtkShadowFaceLinear)
   {
