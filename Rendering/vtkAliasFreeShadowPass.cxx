@@ -41,6 +41,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
 #include <glm/trigonometric.hpp>
 
 #include <algorithm>
@@ -826,7 +827,6 @@ bool vtkAliasFreeShadowPass::RenderFrustum(
         CasterTriangles& triangles = in.Casters.Get(caster, BuildTriangles);
         vtkShadowGeometry* geometry =
           kind == Kind::Edges ? triangles.Edges.get() : triangles.Geometry.get();
-        geometry->SetModelToWorld(caster.ModelToWorld);
         if (kind == Kind::Edges)
         {
           geometry->SetShaders(in.EdgesVertex, in.EdgesFragment, in.EdgesGeometry);
@@ -837,10 +837,13 @@ bool vtkAliasFreeShadowPass::RenderFrustum(
             kind == Kind::Soft ? in.SoftGeometry : in.HardGeometry);
         }
         const int closed = triangles.Closed ? 1 : 0;
-        const float orientation = triangles.Orientation;
+        // A mirroring placement turns the enclosed volume inside out.
+        const float orientation = glm::determinant(glm::dmat3(caster.ModelToWorld)) < 0.0
+          ? -triangles.Orientation
+          : triangles.Orientation;
         const glm::mat3 normalToWorld(
           glm::transpose(glm::inverse(glm::dmat3(caster.ModelToWorld))));
-        geometry->SetUniforms(
+        setup.Geometry.emplace_back(geometry, caster.ModelToWorld,
           [=](vtkShaderProgram* program)
           {
             program->SetUniformMatrix4x4(
@@ -873,7 +876,6 @@ bool vtkAliasFreeShadowPass::RenderFrustum(
               program->SetUniformi("aliasfreeRestrict", restrict ? 1 : 0);
             }
           });
-        setup.Geometry.push_back(geometry);
       }
       if (!setup.Geometry.empty() && !this->Draw(s, setup))
       {

@@ -290,9 +290,12 @@ bool vtkShadowDrawer::Draw(const vtkRenderState* s, const vtkShadowDrawSetup& se
   if (!setup.Geometry.empty())
   {
     const glm::dmat4 worldToClip = frustum ? frustum->Projection * frustum->View : glm::dmat4(1.0);
-    for (vtkShadowGeometry* geometry : setup.Geometry)
+    for (const vtkShadowDrawSetup::GeometryDraw& draw : setup.Geometry)
     {
-      ok = geometry->Draw(context, worldToClip) && ok;
+      ok = (draw.Placed
+               ? draw.Geometry->Draw(context, worldToClip, draw.ModelToWorld, draw.Uniforms)
+               : draw.Geometry->Draw(context, worldToClip)) &&
+        ok;
     }
   }
 

@@ -27,8 +27,12 @@
 #include "vtkSmartPointer.h"               // for vtkSmartPointer
 #include "vtkSoftShadowsRenderingModule.h" // for export macro
 
-#include <array>  // for std::array
-#include <vector> // for std::vector
+#include <glm/mat4x4.hpp> // for glm::dmat4
+
+#include <array>      // for std::array
+#include <functional> // for std::function
+#include <utility>    // for std::move
+#include <vector>     // for std::vector
 
 class vtkOpenGLCamera;
 class vtkOpenGLFramebufferObject;
@@ -36,6 +40,7 @@ class vtkOpenGLRenderWindow;
 class vtkProp;
 class vtkRenderState;
 class vtkShadowCasterRegistry;
+class vtkShaderProgram;
 class vtkShadowGeometry;
 class vtkShadowShaderHooks;
 class vtkShadowStage;
@@ -95,9 +100,33 @@ struct VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowDrawSetup
   /// blending decides what stays.
   bool DepthTest = true;
 
+  /// One draw of technique-owned geometry.
+  struct GeometryDraw
+  {
+    /// At the geometry's own placement, with its own uniforms.
+    GeometryDraw(vtkShadowGeometry* geometry)
+      : Geometry(geometry)
+    {
+    }
+    /// At `modelToWorld`, with `uniforms`: a geometry (of one polydata) drawn
+    /// once for each actor that draws the polydata.
+    GeometryDraw(vtkShadowGeometry* geometry, const glm::dmat4& modelToWorld,
+      std::function<void(vtkShaderProgram*)> uniforms)
+      : Geometry(geometry)
+      , Placed(true)
+      , ModelToWorld(modelToWorld)
+      , Uniforms(std::move(uniforms))
+    {
+    }
+    vtkShadowGeometry* Geometry;
+    bool Placed = false;
+    glm::dmat4 ModelToWorld{ 1.0 };
+    std::function<void(vtkShaderProgram*)> Uniforms;
+  };
+
   Props Draw = Props::Casters;
-  std::vector<vtkShadowGeometry*> Geometry; ///< technique-owned, drawn after the props
-  vtkShadowStage* Stage = nullptr;          ///< the props' shader code; required with props
+  std::vector<GeometryDraw> Geometry; ///< technique-owned, drawn after the props
+  vtkShadowStage* Stage = nullptr;    ///< the props' shader code; required with props
 };
 
 class VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowDrawer

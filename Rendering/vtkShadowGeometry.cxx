@@ -287,6 +287,13 @@ vtkIdType vtkShadowGeometry::GetUploadedBytes() const
 //------------------------------------------------------------------------------
 bool vtkShadowGeometry::Draw(vtkOpenGLRenderWindow* context, const glm::dmat4& worldToClip)
 {
+  return this->Draw(context, worldToClip, this->ModelToWorld, this->Uniforms);
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowGeometry::Draw(vtkOpenGLRenderWindow* context, const glm::dmat4& worldToClip,
+  const glm::dmat4& placement, const std::function<void(vtkShaderProgram*)>& uniforms)
+{
   if (!this->Input ||
     (this->Kind == Primitive::LinesAdjacency ? this->Input->GetNumberOfLines()
                                              : this->Input->GetNumberOfPolys()) == 0)
@@ -304,8 +311,8 @@ bool vtkShadowGeometry::Draw(vtkOpenGLRenderWindow* context, const glm::dmat4& w
   {
     return true;
   }
-  const glm::mat4 modelToClip(worldToClip * this->ModelToWorld);
-  const glm::mat4 modelToWorld(this->ModelToWorld);
+  const glm::mat4 modelToClip(worldToClip * placement);
+  const glm::mat4 modelToWorld(placement);
   if (program->IsUniformUsed("vtkShadowModelToClip"))
   {
     program->SetUniformMatrix4x4(
@@ -316,9 +323,9 @@ bool vtkShadowGeometry::Draw(vtkOpenGLRenderWindow* context, const glm::dmat4& w
     program->SetUniformMatrix4x4(
       "vtkShadowModelToWorld", const_cast<float*>(glm::value_ptr(modelToWorld)));
   }
-  if (this->Uniforms)
+  if (uniforms)
   {
-    this->Uniforms(program);
+    uniforms(program);
   }
   this->VAO->Bind();
   switch (this->Kind)

@@ -100,6 +100,10 @@ public:
 
   /// Draw with `worldToClip` (the draw's frustum). False if the shaders fail.
   bool Draw(vtkOpenGLRenderWindow* context, const glm::dmat4& worldToClip);
+  /// The same at another placement, with other uniforms: one geometry (of
+  /// one polydata) drawn for each actor that draws that polydata.
+  bool Draw(vtkOpenGLRenderWindow* context, const glm::dmat4& worldToClip,
+    const glm::dmat4& modelToWorld, const std::function<void(vtkShaderProgram*)>& uniforms);
 
   void ReleaseGraphicsResources(vtkWindow* w);
 

@@ -233,7 +233,6 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
     {
       BuildMesh(caster.Data, layout, mesh); // the options changed, not the data
     }
-    mesh.Geometry->SetModelToWorld(caster.ModelToWorld);
     mesh.Geometry->SetPrimitive(this->SilhouetteGeometry == EdgeRectangles
         ? vtkShadowGeometry::Primitive::TrianglePoints
         : (layout.PerFace ? vtkShadowGeometry::Primitive::TriangleInstances
@@ -358,7 +357,7 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
       const bool bands = this->SilhouetteGeometry == EdgeRectangles;
       mesh.second->SetShaders(this->Internal->VertexShaders[bands][light.Point],
         this->Internal->FragmentShaders[bands][light.Point], bands ? vtkSilhouetteBandsGS : "");
-      mesh.second->SetUniforms(
+      setup.Geometry.emplace_back(mesh.second, caster.ModelToWorld,
         [lightMC, halfWidth, mapSize, depthMap, widestKept, range](vtkShaderProgram* program)
         {
           program->SetUniform4f("silhouetteDepthRange", range.data());
@@ -371,7 +370,6 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
           program->SetUniformf("silhouetteMapSize", mapSize);
           program->SetUniformf("silhouetteHalfWidth", halfWidth);
         });
-      setup.Geometry.push_back(mesh.second);
     }
     bool drawn = true;
     if (light.Point)

@@ -38,6 +38,7 @@
 
 #include <algorithm>
 #include <array>
+#include <deque>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -64,12 +65,33 @@ struct SlotEdges
   std::array<vtkPolyData*, 6> QuadsFrom{}; ///< the Chained they came from
 };
 
-// What the pass keeps of each caster's polydata.
+// What the pass keeps of each caster's polydata: its faces' silhouette
+// search, and per placement (the actors drawing the polydata, in the
+// registry's order: each sees the lights from its own side) per light slot
+// its silhouette edges.
 struct CasterEdges
 {
   vtkSmartPointer<vtkLightSilhouetteFilter> Filter; ///< over the merged faces; keeps its tree
   vtkSmartPointer<vtkDataArray> FaceNormals;        ///< per edge: its two faces' normals
-  std::vector<SlotEdges> Slots;
+  std::deque<std::vector<SlotEdges>> Placements; ///< a deque: taken ones stay put
+  unsigned long Frame = 0; ///< the frame that last took a placement
+  size_t Taken = 0;        ///< placements taken in that frame
+
+  /// The next placement's slots this frame; those of actors gone are dropped.
+  std::vector<SlotEdges>& TakePlacement(unsigned long frame)
+  {
+    if (this->Frame != frame)
+    {
+      this->Placements.resize(this->Taken);
+      this->Frame = frame;
+      this->Taken = 0;
+    }
+    if (this->Taken == this->Placements.size())
+    {
+      this->Placements.emplace_back();
+    }
+    return this->Placements[this->Taken++];
+  }
 };
 
 void BuildEdges(vtkPolyData* data, CasterEdges& edges)
@@ -364,6 +386,7 @@ struct vtkSmoothieShadowPass::Internals
   std::string CubeFaceGeometryShader =
     vtkShadowGeometry::WithPrefix(vtkSmoothieEdgesGS, "#define SMOOTHIE_CUBE_FACE");
   bool PackedReported = false;
+  unsigned long Frame = 0; ///< frames drawn, for CasterEdges::TakePlacement()
 };
 
 vtkStandardNewMacro(vtkSmoothieShadowPass);
@@ -395,8 +418,9 @@ bool vtkSmoothieShadowPass::RenderShadowMaps(const vtkRenderState* s)
   // filled faces (lines, points, wireframe, imposters) casts its depth-map
   // shadow only.
   const auto start = std::chrono::steady_clock::now();
-  std::vector<std::pair<const vtkShadowCaster*, CasterEdges*>> casters;
+  std::vector<std::pair<const vtkShadowCaster*, std::vector<SlotEdges>*>> casters;
   this->NumberOfSilhouetteEdges = 0;
+  const unsigned long frame = ++this->Internal->Frame;
   for (const vtkShadowCaster& caster : this->Casters->GetCasters())
   {
     if (!caster.Faces)
@@ -404,14 +428,15 @@ bool vtkSmoothieShadowPass::RenderShadowMaps(const vtkRenderState* s)
       continue;
     }
     CasterEdges& edges = this->Internal->Casters.Get(caster, BuildEdges);
-    edges.Slots.resize(lights.size());
+    std::vector<SlotEdges>& slots = edges.TakePlacement(frame);
+    slots.resize(lights.size());
     for (size_t slot = 0; slot < lights.size(); ++slot)
     {
       const auto& light = lights[slot];
       const glm::dvec3 l = light.Directional ? caster.DirectionToModel(-light.Map.Direction)
                                              : caster.PointToModel(light.Position);
       const std::array<double, 4> key = { { l.x, l.y, l.z, light.Directional ? 0.0 : 1.0 } };
-      SlotEdges& entry = edges.Slots[slot];
+      SlotEdges& entry = slots[slot];
       if (!entry.Geometry)
       {
         entry.Geometry = vtkShadowGeometry::NewShared();
@@ -432,7 +457,7 @@ bool vtkSmoothieShadowPass::RenderShadowMaps(const vtkRenderState* s)
       entry.Geometry->SetModelToWorld(caster.ModelToWorld);
       this->NumberOfSilhouetteEdges += entry.Edges;
     }
-    casters.emplace_back(&caster, &edges);
+    casters.emplace_back(&caster, &slots);
   }
   this->Internal->Casters.Prune(*this->Casters);
   double cpu =
@@ -542,7 +567,7 @@ bool vtkSmoothieShadowPass::RenderShadowMaps(const vtkRenderState* s)
       setup.Geometry.clear();
       for (const auto& caster : casters)
       {
-        SlotEdges& entry = caster.second->Slots[slot];
+        SlotEdges& entry = (*caster.second)[slot];
         vtkShadowGeometry* geometry = entry.Geometry.get();
         if (this->BuildOnGPU)
         {
