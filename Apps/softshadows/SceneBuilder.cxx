@@ -10,11 +10,14 @@
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
+#include <vtkFloatArray.h>
+#include <vtkGlyph3DMapper.h>
 #include <vtkLight.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkPlaneSource.h>
 #include <vtkPointData.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkPolyDataNormals.h>
@@ -64,14 +67,68 @@ vtkSmartPointer<vtkPolyData> WithNormals(vtkPolyData* mesh)
   return normals->GetOutput();
 }
 
+/// A vtkGlyph3DMapper drawing `mesh` at every point of the grid `glyphs`
+/// describes, centred on the origin; each instance turned (a direction) and
+/// scaled (a size) by values that vary over the grid without repeating soon.
+vtkSmartPointer<vtkMapper> GlyphMapper(vtkPolyData* mesh, const SceneGlyphs& glyphs)
+{
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkFloatArray> directions, sizes;
+  directions->SetName("direction");
+  directions->SetNumberOfComponents(3);
+  sizes->SetName("size");
+  const auto& n = glyphs.Count;
+  const auto& d = glyphs.Spacing;
+  vtkIdType k = 0;
+  for (int z = 0; z < n[2]; ++z)
+  {
+    for (int y = 0; y < n[1]; ++y)
+    {
+      for (int x = 0; x < n[0]; ++x, ++k)
+      {
+        points->InsertNextPoint((x - 0.5 * (n[0] - 1)) * d[0], (y - 0.5 * (n[1] - 1)) * d[1],
+          (z - 0.5 * (n[2] - 1)) * d[2]);
+        // The golden angle and ratio: neighbours differ, nothing lines up.
+        const double angle = 2.39996322972865332 * static_cast<double>(k);
+        directions->InsertNextTuple3(std::cos(angle), 1.0, std::sin(angle));
+        const double fraction = std::fmod(0.61803398874989485 * static_cast<double>(k), 1.0);
+        sizes->InsertNextValue(
+          static_cast<float>(glyphs.Sizes[0] + fraction * (glyphs.Sizes[1] - glyphs.Sizes[0])));
+      }
+    }
+  }
+  vtkNew<vtkPolyData> grid;
+  grid->SetPoints(points);
+  grid->GetPointData()->AddArray(directions);
+  grid->GetPointData()->AddArray(sizes);
+  auto mapper = vtkSmartPointer<vtkGlyph3DMapper>::New();
+  mapper->SetInputData(grid);
+  mapper->SetSourceData(mesh);
+  mapper->SetOrient(glyphs.Turn);
+  mapper->SetOrientationArray("direction");
+  mapper->SetOrientationModeToDirection();
+  mapper->SetScaleArray("size");
+  mapper->SetScaleModeToScaleByMagnitude();
+  return mapper;
+}
+
 vtkSmartPointer<vtkActor> MakeActor(const SceneActor& description)
 {
   vtkSmartPointer<vtkPolyData> mesh = description.Source.empty()
     ? ReadMesh(description)
     : FindSource(description.Source, description.Path).Create(description.Parameters);
 
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(WithNormals(mesh));
+  vtkSmartPointer<vtkMapper> mapper;
+  if (description.Glyphs.Count[0] > 0)
+  {
+    mapper = GlyphMapper(WithNormals(mesh), description.Glyphs);
+  }
+  else
+  {
+    auto polydata = vtkSmartPointer<vtkPolyDataMapper>::New();
+    polydata->SetInputData(WithNormals(mesh));
+    mapper = polydata;
+  }
   // Colours stored in mesh files would hide the scene's colour.
   mapper->ScalarVisibilityOff();
 

@@ -236,12 +236,65 @@ void ReadModelFile(const Json& value, const std::string& path,
   }
 }
 
+// At most this many glyph instances an actor (a million: llvmpipe draws
+// them in seconds, and the instances' mesh stays under a few GiB).
+constexpr double MaximumGlyphs = 1.0e6;
+
+SceneGlyphs ReadGlyphs(const Json& value, const std::string& path)
+{
+  CheckObject(value, path, { "count", "spacing", "turn", "sizes" });
+  RequireField(value, path, "count");
+  SceneGlyphs glyphs;
+  const std::string countPath = FieldPath(path, "count");
+  const Json& count = value["count"];
+  if (!count.is_array() || count.size() != 3)
+  {
+    throw InputError(countPath, "expected [nx, ny, nz]");
+  }
+  double total = 1.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    glyphs.Count[k] = ReadInteger(count[k], IndexPath(countPath, k), Range::Between(1, 1000000));
+    total *= glyphs.Count[k];
+  }
+  if (total > MaximumGlyphs)
+  {
+    throw InputError(countPath, "at most 1000000 instances in all");
+  }
+  if (value.contains("spacing"))
+  {
+    CheckValue(value["spacing"], ValueType::Size3, Range::Positive(), FieldPath(path, "spacing"));
+    const auto spacing = Components(value["spacing"], 3);
+    glyphs.Spacing = { spacing[0], spacing[1], spacing[2] };
+  }
+  if (value.contains("turn"))
+  {
+    glyphs.Turn = ReadBoolean(value["turn"], FieldPath(path, "turn"));
+  }
+  if (value.contains("sizes"))
+  {
+    const std::string sizesPath = FieldPath(path, "sizes");
+    const Json& sizes = value["sizes"];
+    if (!sizes.is_array() || sizes.size() != 2)
+    {
+      throw InputError(sizesPath, "expected [smallest, largest]");
+    }
+    glyphs.Sizes = { ReadNumber(sizes[0], IndexPath(sizesPath, 0), Range::Positive()),
+      ReadNumber(sizes[1], IndexPath(sizesPath, 1), Range::Positive()) };
+    if (glyphs.Sizes[1] < glyphs.Sizes[0])
+    {
+      throw InputError(sizesPath, "the largest is smaller than the smallest");
+    }
+  }
+  return glyphs;
+}
+
 SceneActor ReadActor(
   const Json& value, const std::string& path, const std::filesystem::path& folder)
 {
   CheckObject(value, path,
     { "source", "params", "file", "import", "position", "orientation", "scale", "color", "opacity",
-      "pbr" });
+      "pbr", "glyphs" });
   SceneActor actor;
   actor.Path = path;
   const int kinds = static_cast<int>(value.contains("source")) +
@@ -253,7 +306,7 @@ SceneActor ReadActor(
   }
   if (value.contains("import"))
   {
-    for (const char* field : { "params", "color", "opacity", "pbr" })
+    for (const char* field : { "params", "color", "opacity", "pbr", "glyphs" })
     {
       RejectField(value, path, field, "an imported model's materials come from its file");
     }
@@ -275,6 +328,10 @@ SceneActor ReadActor(
     ReadMeshFile(value["file"], FieldPath(path, "file"), folder, actor);
   }
 
+  if (value.contains("glyphs"))
+  {
+    actor.Glyphs = ReadGlyphs(value["glyphs"], FieldPath(path, "glyphs"));
+  }
   if (value.contains("position"))
   {
     actor.Position = ReadVector3(value["position"], FieldPath(path, "position"));

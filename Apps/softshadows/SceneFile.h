@@ -57,6 +57,16 @@ enum class MeshFormat
   STL
 };
 
+/// An actor's `glyphs`: its geometry drawn as instances on a grid, through
+/// one vtkGlyph3DMapper.
+struct SceneGlyphs
+{
+  std::array<int, 3> Count{ 0, 0, 0 }; ///< instances along x, y, z; 0: no glyphs
+  Vector3 Spacing{ 1.0, 1.0, 1.0 };
+  bool Turn = false;                    ///< each instance pointed its own way
+  std::array<double, 2> Sizes{ 1.0, 1.0 }; ///< each instance scaled within
+};
+
 struct SceneActor
 {
   std::string Path;   ///< `actors[i]`, for messages about it
@@ -75,6 +85,7 @@ struct SceneActor
   bool PBR = false;
   double Metallic = 0.0;
   double Roughness = 0.5;
+  SceneGlyphs Glyphs;
 };
 
 struct SceneShadows

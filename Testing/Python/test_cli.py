@@ -9,6 +9,7 @@ import pty
 import subprocess
 import tempfile
 
+import numpy as np
 import shadowtest as st
 
 here = os.path.dirname(os.path.abspath(__file__))
@@ -77,6 +78,39 @@ with tempfile.TemporaryDirectory() as folder:
     st.check(result.stderr.count("lights are drawn without shadows") == 1 and
              len(result.stderr.strip().splitlines()) == 1,
              "40 lights: one warning line and nothing else: %r" % result.stderr[-300:])
+
+    # Glyphs: the ball drawn as 3 x 3 instances casts nine shadows; bad
+    # `glyphs` objects are refused naming the field.
+    def glyph_scene(glyphs):
+        scene = json.loads(json.dumps(good))
+        scene["actors"][1]["params"]["radius"] = 0.2
+        scene["actors"][1]["glyphs"] = glyphs
+        path = os.path.join(folder, "glyphs.json")
+        with open(path, "w") as f:
+            json.dump(scene, f)
+        return scene, path
+
+    scene, _ = glyph_scene({"count": [3, 1, 3], "spacing": 0.8, "turn": True,
+                            "sizes": [0.8, 1.2]})
+    visibility, geometry = st.shadow_only(scene, "aliasfree:hard")
+    single = json.loads(json.dumps(scene))
+    del single["actors"][1]["glyphs"]
+    one, _ = st.shadow_only(single, "aliasfree:hard")
+    shadowed = np.sum(geometry & (visibility < 0.5))
+    alone = np.sum(geometry & (one < 0.5))
+    st.check(alone > 0 and 6 * alone < shadowed < 12 * alone,
+             "3 x 3 glyphs under aliasfree: about nine balls' shadow pixels (%d, one ball %d)"
+             % (shadowed, alone))
+    for glyphs, needle in [({"spacing": 1}, "actors[1].glyphs"),
+                           ({"count": [3, 3]}, "actors[1].glyphs.count"),
+                           ({"count": [1000, 1000, 2]}, "at most 1000000"),
+                           ({"count": [2, 1, 2], "sizes": [2, 1]}, "actors[1].glyphs.sizes"),
+                           ({"count": [2, 1, 2], "spin": 1}, "actors[1].glyphs.spin")]:
+        _, path = glyph_scene(glyphs)
+        result = st.run(["render", path], check=False)
+        message = result.stderr.strip()
+        st.check(result.returncode == 2 and needle in message and "\n" not in message,
+                 "glyphs %s: one line naming %s: %r" % (glyphs, needle, message))
 
     # VTK's own pass renders too (the benchmark's baseline).
     st.run(["render", scene_file, "--technique", "vtk", "--output", os.path.join(folder, "vtk.png")])
