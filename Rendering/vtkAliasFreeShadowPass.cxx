@@ -342,7 +342,8 @@ bool vtkAliasFreeShadowPass::RenderShadowMaps(const vtkRenderState* s)
   // drawn as wireframe) casts as `hard` casts it, through a depth map of
   // its own: every view sample's visibility is the lesser of the two.
   Internals& in = *this->Internal;
-  in.BeyondFaces = !this->Casters->GetDepthMapProps().empty();
+  // Drawn, and combined, by every process when one has such props.
+  in.BeyondFaces = this->OnAnyProcess(!this->Casters->GetDepthMapProps().empty());
   if (!in.BeyondFaces)
   {
     return true;

@@ -740,6 +740,12 @@ bool vtkSoftShadowPass::RenderDepthMap(const vtkRenderState* s, const vtkShadowF
 }
 
 //------------------------------------------------------------------------------
+bool vtkSoftShadowPass::OnAnyProcess(bool value)
+{
+  return this->Parallel->IsParallel() ? this->Parallel->CombineMinimum(value ? 0 : 1) == 0 : value;
+}
+
+//------------------------------------------------------------------------------
 bool vtkSoftShadowPass::RenderDistanceCube(const vtkRenderState* s,
   const std::array<vtkShadowFrustum, 6>& faces, vtkTextureObject* cube, bool beyondFaces)
 {

@@ -283,6 +283,10 @@ protected:
    * casters that draw more than faces (lines, points, imposters:
    * vtkShadowCasterRegistry::GetDepthMapProps()).
    */
+  /// Whether `value` holds on any process (this one's when not parallel):
+  /// decisions to draw maps that are combined must be the same on all.
+  bool OnAnyProcess(bool value);
+
   bool RenderDepthMap(const vtkRenderState* s, const vtkShadowFrustum& frustum,
     vtkTextureObject* target, bool beyondFaces = false);
   bool RenderDistanceCube(const vtkRenderState* s, const std::array<vtkShadowFrustum, 6>& faces,
