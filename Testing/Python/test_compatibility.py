@@ -18,7 +18,9 @@ technique. Then, against plain VTK's picture:
   (volumes), naming it.
 Every failure is listed before the test fails.
 """
+import os
 import sys
+import time
 
 import numpy as np
 import shadowtest as st
@@ -30,13 +32,14 @@ from vtkmodules.vtkCommonCore import (VTK_STRING, vtkCommand, vtkFloatArray, vtk
                                       vtkPoints, vtkUnsignedCharArray)
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkMolecule, vtkMultiBlockDataSet, vtkPolyData
 from vtkmodules.vtkDomainsChemistryOpenGL2 import vtkOpenGLMoleculeMapper
-from vtkmodules.vtkFiltersCore import vtkElevationFilter, vtkPolyDataNormals
-from vtkmodules.vtkFiltersSources import (vtkCubeSource, vtkLineSource, vtkPlaneSource,
+from vtkmodules.vtkFiltersCore import vtkElevationFilter, vtkPolyDataNormals, vtkReverseSense
+from vtkmodules.vtkFiltersSources import (vtkConeSource, vtkCubeSource, vtkLineSource, vtkPlaneSource,
                                           vtkSphereSource, vtkTexturedSphereSource)
 from vtkmodules.vtkImagingSources import vtkImageGridSource
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
 from vtkmodules.vtkRenderingAnnotation import vtkAxesActor
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkAssembly, vtkColorTransferFunction,
+                                         vtkCompositeDataDisplayAttributes,
                                          vtkGlyph3DMapper,
                                          vtkImageSlice, vtkImageSliceMapper, vtkLight,
                                          vtkLightActor,
@@ -44,12 +47,11 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkAssembly, vtkColorTransfer
                                          vtkTextActor, vtkTexture, vtkVolume,
                                          vtkWindowToImageFilter)
 from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
+from vtkmodules.vtkCommonTransforms import vtkTransform
 from vtkmodules.vtkRenderingVolumeOpenGL2 import vtkOpenGLGPUVolumeRayCastMapper
 import vtkmodules.vtkRenderingFreeType  # noqa: F401
 from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLSphereMapper, vtkOpenGLStickMapper
-from vtksoftshadows import (vtkContactHardeningShadowPass, vtkHardShadowPass,
-                            vtkOmnidirectionalShadowPass, vtkReferenceShadowPass,
-                            vtkSoftShadowPass)
+from vtksoftshadows import vtkShadowTechniqueCatalog, vtkSoftShadowPass
 
 SIZE = (160, 120)
 
@@ -76,13 +78,13 @@ def ball(resolution=24):
     return sphere
 
 
-def grid_plate():
+def grid_plate(resolution=8):
     """A plate facing the light, with point normals."""
     plate = vtkPlaneSource()
     plate.SetOrigin(-0.6, 0.8, 0.6)
     plate.SetPoint1(0.6, 0.8, 0.6)
     plate.SetPoint2(-0.6, 0.8, -0.6)
-    plate.SetResolution(8, 8)
+    plate.SetResolution(resolution, resolution)
     normals = vtkPolyDataNormals()
     normals.SetInputConnection(plate.GetOutputPort())
     return normals
@@ -117,8 +119,8 @@ def case_surface():
     return [actor_for(mapper_for(ball()))]
 
 
-def case_representation(setup):
-    actor = actor_for(mapper_for(grid_plate()))
+def case_representation(setup, resolution=8):
+    actor = actor_for(mapper_for(grid_plate(resolution)))
     setup(actor.GetProperty())
     return [actor]
 
@@ -192,7 +194,10 @@ def case_axes():
     axes.SetCylinderRadius(0.06)
     axes.SetConeRadius(0.3)
     axes.AxisLabelsOff()
-    axes.SetPosition(-0.3, 0.6, 0.0)
+    # vtkAxesActor places its parts by its user transform only (not by SetPosition).
+    place = vtkTransform()
+    place.Translate(-0.3, 0.6, 0.0)
+    axes.SetUserTransform(place)
     return [axes]
 
 
@@ -207,19 +212,6 @@ def case_molecule():
     return [actor_for(mapper)]
 
 
-def case_composite():
-    blocks = vtkMultiBlockDataSet()
-    for i, x in enumerate((-0.45, 0.45)):
-        sphere = vtkSphereSource()
-        sphere.SetCenter(x, 0.9, 0.0)
-        sphere.SetRadius(0.3)
-        sphere.Update()
-        blocks.SetBlock(i, sphere.GetOutput())
-    mapper = st.composite_mapper()
-    mapper.SetInputDataObject(blocks)
-    return [actor_for(mapper)]
-
-
 def case_glyphs():
     cube = vtkCubeSource()
     cube.SetXLength(0.3)
@@ -230,6 +222,140 @@ def case_glyphs():
     mapper.SetSourceConnection(cube.GetOutputPort())
     mapper.ScalingOff()
     return [actor_for(mapper)]
+
+
+def case_oriented_glyphs():
+    """Cones pointing three ways, each scaled by its own value: every
+    instance at its own transform."""
+    data = three_points()
+    directions = vtkFloatArray()
+    directions.SetName("direction")
+    directions.SetNumberOfComponents(3)
+    sizes = vtkFloatArray()
+    sizes.SetName("size")
+    for direction, size in (((1, 0, 0), 0.3), ((0, 0, 1), 0.5), ((1, 1, 0), 0.4)):
+        directions.InsertNextTuple3(*direction)
+        sizes.InsertNextValue(size)
+    data.GetPointData().AddArray(directions)
+    data.GetPointData().AddArray(sizes)
+    cone = vtkConeSource()
+    cone.SetResolution(12)
+    cone.SetRadius(0.3)
+    mapper = vtkGlyph3DMapper()
+    mapper.SetInputData(data)
+    mapper.SetSourceConnection(cone.GetOutputPort())
+    mapper.SetOrientationArray("direction")
+    mapper.SetOrientationModeToDirection()
+    mapper.SetScaleArray("size")
+    mapper.SetScaleModeToScaleByMagnitude()
+    mapper.SetScaleFactor(1.5)
+    return [actor_for(mapper)]
+
+
+def case_indexed_glyphs():
+    """A cube, a sphere and a cube again, picked per point by an index array."""
+    data = three_points()
+    index = vtkFloatArray()
+    index.SetName("which")
+    for i in (0, 1, 0):
+        index.InsertNextValue(i)
+    data.GetPointData().AddArray(index)
+    cube = vtkCubeSource()
+    cube.SetXLength(0.3)
+    cube.SetYLength(0.3)
+    cube.SetZLength(0.3)
+    sphere = vtkSphereSource()
+    sphere.SetRadius(0.22)
+    mapper = vtkGlyph3DMapper()
+    mapper.SetInputData(data)
+    mapper.SetSourceConnection(0, cube.GetOutputPort())
+    mapper.SetSourceConnection(1, sphere.GetOutputPort())
+    mapper.SourceIndexingOn()
+    mapper.SetSourceIndexArray("which")
+    mapper.ScalingOff()
+    return [actor_for(mapper)]
+
+
+def two_balls(hidden=None):
+    """Two balls as two blocks of a composite dataset; the second drawn
+    (`hidden` None), hidden by the display attributes ("block"), translucent
+    by them ("translucent") or left out of the dataset ("left out")."""
+    blocks = vtkMultiBlockDataSet()
+    spheres = []
+    for i, x in enumerate((-0.45, 0.45)):
+        sphere = vtkSphereSource()
+        sphere.SetCenter(x, 0.9, 0.0)
+        sphere.SetRadius(0.3)
+        sphere.Update()
+        spheres.append(sphere.GetOutput())
+    blocks.SetBlock(0, spheres[0])
+    if hidden != "left out":
+        blocks.SetBlock(1, spheres[1])
+    mapper = st.composite_mapper()
+    mapper.SetInputDataObject(blocks)
+    if hidden in ("block", "translucent"):
+        attributes = vtkCompositeDataDisplayAttributes()
+        if hidden == "block":
+            attributes.SetBlockVisibility(spheres[1], False)
+        else:
+            attributes.SetBlockOpacity(spheres[1], 0.5)
+        mapper.SetCompositeDataDisplayAttributes(attributes)
+    return [actor_for(mapper)]
+
+
+def case_hidden_actor(hide=True):
+    """A ball, and a second one switched off."""
+    actors = case_surface()
+    if hide:
+        sphere = vtkSphereSource()
+        sphere.SetCenter(0.7, 1.0, 0.3)
+        sphere.SetRadius(0.3)
+        hidden = actor_for(mapper_for(sphere))
+        hidden.VisibilityOff()
+        actors.append(hidden)
+    return actors
+
+
+def case_hidden_part(hide=True):
+    """An assembly of two balls whose second part is switched off."""
+    assembly = vtkAssembly()
+    for i, x in enumerate((-0.45, 0.45)):
+        sphere = vtkSphereSource()
+        sphere.SetCenter(x, 0.0, 0.0)
+        sphere.SetRadius(0.3)
+        part = actor_for(mapper_for(sphere))
+        if i == 1:
+            if not hide:
+                continue
+            part.VisibilityOff()
+        assembly.AddPart(part)
+    assembly.SetPosition(0.0, 0.9, 0.0)
+    return [assembly]
+
+
+def case_shared_mapper():
+    """Two actors drawing one mapper's polydata, placed apart: one cached
+    mesh, two placements."""
+    mapper = mapper_for(ball())
+    actors = [actor_for(mapper), actor_for(mapper)]
+    actors[0].SetPosition(-0.5, 0.0, 0.0)
+    actors[1].SetPosition(0.5, 0.0, -0.2)
+    actors[1].SetScale(0.7)
+    return actors
+
+
+def case_mirrored():
+    """A closed mesh placed by a mirroring matrix: its faces wind inwards in
+    its own coordinates and outwards in the world (VTK lights the faces that
+    wind towards the camera; the normals stay as they are)."""
+    sphere = ball()
+    reverse = vtkReverseSense()
+    reverse.SetInputConnection(sphere.GetOutputPort())
+    reverse.ReverseCellsOn()
+    reverse.ReverseNormalsOff()
+    actor = actor_for(mapper_for(reverse))
+    actor.SetScale(-1.0, 1.0, 1.0)
+    return [actor]
 
 
 def case_textured():
@@ -337,29 +463,48 @@ def shade():
 
 # Translucent actors are drawn and receive shadows but cast none, as in VTK.
 TRANSLUCENT = {"casts": False}
+HOLLOW = {"hollow": "plate"}
 PEELED = {"casts": False, "peeling": True}
 
 CASES = [
     ("surface", case_surface),
-    ("wireframe", lambda: case_representation(lambda p: p.SetRepresentationToWireframe())),
+    ("surface, under a point light", case_surface, {"point": True}),
+    # A plate of 4 x 4 squares, whose shadow is solid; then drawn as lines,
+    # whose shadows leave holes (this window resolves 4 x 4, not 8 x 8).
+    ("plate", lambda: case_representation(lambda p: None, 4)),
+    ("wireframe", lambda: case_representation(lambda p: p.SetRepresentationToWireframe(), 4),
+     HOLLOW),
     ("points", lambda: case_representation(
-        lambda p: (p.SetRepresentationToPoints(), p.SetPointSize(4)))),
+        lambda p: (p.SetRepresentationToPoints(), p.SetPointSize(4))), HOLLOW),
     ("edges", case_edges),
     # VTK lights lines only with normals: these are drawn unlit, shadow or not.
     ("polylines", case_polylines, {"receives": False}),
     ("lines as tubes", lambda: case_representation(
         lambda p: (p.SetRepresentationToWireframe(), p.RenderLinesAsTubesOn(),
-                   p.SetLineWidth(4)))),
+                   p.SetLineWidth(3)), 4), HOLLOW),
     ("points as spheres", lambda: case_representation(
         lambda p: (p.SetRepresentationToPoints(), p.RenderPointsAsSpheresOn(),
-                   p.SetPointSize(6)))),
+                   p.SetPointSize(6))), HOLLOW),
     ("sphere imposters", case_sphere_imposters),
     ("stick imposters", case_stick_imposters),
     ("molecule (sphere and stick imposters)", case_molecule),
-    ("composite", case_composite),
+    ("composite", two_balls),
+    ("two actors, one mapper", case_shared_mapper),
+    ("mirrored", case_mirrored),
     ("assembly", case_assembly),
     ("axes actor", case_axes),
     ("glyphs", case_glyphs),
+    ("glyphs, oriented and scaled", case_oriented_glyphs),
+    ("glyphs, indexed sources", case_indexed_glyphs),
+    ("glyphs, under a point light", case_glyphs, {"point": True}),
+    # What is switched off casts nothing: the picture is the scene's without it.
+    ("hidden actor", case_hidden_actor, {"same_as": lambda: case_hidden_actor(False)}),
+    ("hidden assembly part", case_hidden_part, {"same_as": lambda: case_hidden_part(False)}),
+    ("hidden composite block", lambda: two_balls("block"),
+     {"same_as": lambda: two_balls("left out")}),
+    # A translucent block receives and casts nothing: the floor is as without it.
+    ("translucent composite block", lambda: two_balls("translucent"),
+     {"same_as": lambda: two_balls("left out")}),
     ("textured", case_textured),
     ("scalar colours", case_scalars),
     ("PBR", case_pbr),
@@ -380,30 +525,37 @@ CASES = [
 
 
 def technique(name):
-    if name == "hard":
-        return vtkHardShadowPass()
-    if name == "contact":
-        return vtkContactHardeningShadowPass()
-    if name == "omni":
-        return vtkOmnidirectionalShadowPass()
-    if name == "reference":
-        reference = vtkReferenceShadowPass()
-        reference.SetNumberOfSamples(16)
-        return reference
-    raise ValueError(name)
+    """A pass by the catalog's name, "technique" or "technique:variant"."""
+    base, _, variant = name.partition(":")
+    index = vtkShadowTechniqueCatalog.FindTechnique(base)
+    shadows = vtkShadowTechniqueCatalog.NewPass(
+        index, vtkShadowTechniqueCatalog.FindVariant(index, variant) if variant else -1)
+    if base == "reference":
+        shadows.SetNumberOfSamples(16)
+    return shadows
 
 
-TECHNIQUES = ["hard", "contact", "omni", "reference"]
+# Every technique and variant; hard first: the others' shadows are compared
+# with its, which VTK's own mappers draw.
+TECHNIQUES = ["hard", "hard:sixpass", "reference", "contact:pcf", "contact:gaussian",
+              "contact:multipass", "omni:poisson", "omni:pcf4", "omni:hard", "silhouette",
+              "silhouette:hard", "smoothies", "aliasfree", "aliasfree:hard"]
+# While working on one: COMPATIBILITY_ONLY="aliasfree,glyphs" keeps the
+# techniques and cases whose names contain one of those words.
+ONLY = [w for w in os.environ.get("COMPATIBILITY_ONLY", "").split(",") if w]
 
 
-def render(props, name=None, peeling=False, view=None, viewport=None):
-    """RGB image (rows bottom first) of the floor, `props` and the light;
+def render(props, name=None, options=None):
+    """RGB image (rows bottom first) of the floor, `props` and the light, as
+    the case's `options` say (a point light, depth peeling, another view;
     with `viewport`, in a renderer over that part of the window, beside a
-    second, empty renderer over the rest."""
+    second, empty renderer over the rest)."""
+    options = options or {}
+    view, viewport = options.get("view"), options.get("viewport")
     renderer = vtkRenderer()
     if viewport:
         renderer.SetViewport(*viewport)
-    renderer.SetUseDepthPeeling(peeling)
+    renderer.SetUseDepthPeeling(options.get("peeling", False))
     renderer.AutomaticLightCreationOff()
     renderer.SetBackground(0.0, 0.0, 0.4)
     floor = vtkPlaneSource()
@@ -419,7 +571,8 @@ def render(props, name=None, peeling=False, view=None, viewport=None):
     light.SetPositional(True)
     light.SetPosition(0.6, 5.0, 1.0)
     light.SetFocalPoint(0.0, 0.0, 0.0)
-    light.SetConeAngle(40.0)
+    # A point light (a cone of 90 degrees or more) is shadowed through cube maps.
+    light.SetConeAngle(120.0 if options.get("point") else 40.0)
     vtkSoftShadowPass.SetRadius(0.1, light)
     renderer.AddLight(light)
     if "light actor" in props:
@@ -435,9 +588,7 @@ def render(props, name=None, peeling=False, view=None, viewport=None):
         shadows = technique(name)
         shadows.SetMapSize(512)
         renderer.SetPass(shadows)
-    window = vtkRenderWindow()
-    window.SetSize(*SIZE)
-    window.SetMultiSamples(0)
+    window = WINDOW
     window.AddRenderer(renderer)
     if viewport:
         other = vtkRenderer()
@@ -450,8 +601,20 @@ def render(props, name=None, peeling=False, view=None, viewport=None):
     grab.Update()
     image = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())
     result = image.reshape(SIZE[1], SIZE[0], -1)[:, :, :3].astype(float)
-    window.Finalize()
+    # The next picture's renderer takes this one's place: the pass and the
+    # mappers let their resources go, as when an application swaps scenes.
+    renderers = window.GetRenderers()
+    for r in [renderers.GetItemAsObject(i) for i in range(renderers.GetNumberOfItems())]:
+        r.ReleaseGraphicsResources(window)
+        window.RemoveRenderer(r)
     return result
+
+
+# One window for every picture: its context's shader cache spares most of
+# the compiling a window of its own each would repeat.
+WINDOW = vtkRenderWindow()
+WINDOW.SetSize(*SIZE)
+WINDOW.SetMultiSamples(0)
 
 
 def brightness(image):
@@ -480,24 +643,54 @@ def on_warning(caller, event, text):
 
 vtkOutputWindow.GetInstance().AddObserver(vtkCommand.WarningEvent, on_warning)
 
+# COMPATIBILITY_ONLY's words pick cases, techniques or both; hard always runs.
+case_words = [w for w in ONLY if any(w in case[0] for case in CASES)]
+technique_words = [w for w in ONLY if any(w in t for t in TECHNIQUES)]
+cases = [c for c in CASES if not case_words or any(w in c[0] for w in case_words)]
+techniques = [t for t in TECHNIQUES
+              if t == "hard" or not technique_words or any(w in t for w in technique_words)]
+
 failures = []
-floors = {}
-for case, build, *options in CASES:
+renders = 0
+
+
+def render_counted(props, name=None, options=None):
+    global renders
+    renders += 1
+    return brightness(render(props, name, options))
+
+
+def check_messages(label, expected=None):
+    """No error; a warning only where a mapper cannot be shadowed, naming it."""
+    named = [w for w in warnings if expected and expected in w]
+    if len(named) != (1 if expected else 0) or len(warnings) != len(named):
+        failures.append("%s: %d warning(s), expected %s: %s" % (
+            label, len(warnings), "one naming " + expected if expected else "none",
+            " | ".join(w.strip()[-200:] for w in warnings)))
+    warnings.clear()
+    if errors:
+        failures.append("%s: VTK reported %d error(s), the first: %s"
+                        % (label, len(errors), errors[0].strip()[:300]))
+        errors.clear()
+
+
+floors = {}      # the floor alone, per camera, viewport and light, plain or per technique
+shadows = {}     # each case's floor shadow (a mask) under each technique
+start = time.time()
+for case, build, *options in cases:
     options = options[0] if options else {}
-    peeling = options.get("peeling", False)
-    view = options.get("view")
-    viewport = options.get("viewport")
-    # The floor alone, once for each camera and viewport the cases use.
-    key = (view, viewport)
+    # The floor alone, once for each camera, viewport and light the cases use.
+    key = (options.get("view"), options.get("viewport"), options.get("point", False))
+    look = {k: options[k] for k in ("view", "viewport", "point") if k in options}
     if key not in floors:
-        floors[key] = brightness(render([], view=view, viewport=viewport))
+        floors[key] = render_counted([], options=look)
     floor_only = floors[key]
-    plain = brightness(render(build(), peeling=peeling, view=view, viewport=viewport))
+    plain = render_counted(build(), options=options)
     actor = np.abs(plain - floor_only) > 3.0
     floor = ~actor & (floor_only > 10.0)
     lit_actor = actor & (plain > 40.0)
-    for name in TECHNIQUES:
-        shaded = brightness(render(build(), name, peeling, view, viewport))
+    for name in techniques:
+        shaded = render_counted(build(), name, options)
         label = "%s, %s" % (case, name)
         if options.get("unlit"):
             # Drawn as plain VTK draws it, pixel for pixel (its lines are black).
@@ -505,8 +698,9 @@ for case, build, *options in CASES:
             if actor.sum() < 20 or changed > 0.01:
                 failures.append("%s: %d pixels, %.1f%% of them not as plain VTK draws them"
                                 % (label, actor.sum(), 100 * changed))
-            print("%-40s %-9s %.1f%% of %d pixels changed" % (case, name, 100 * changed,
-                                                            actor.sum()))
+            check_messages(label)
+            print("%-40s %-17s %.1f%% of %d pixels changed" % (case, name, 100 * changed,
+                                                              actor.sum()))
             continue
         if lit_actor.sum() < 20:
             failures.append("%s: plain VTK lights too little of the actor to judge" % label)
@@ -518,28 +712,52 @@ for case, build, *options in CASES:
             failures.append("%s: actor not lit as plain VTK (median difference %.1f, "
                             "%.0f%% of its lit pixels darker by a quarter)"
                             % (label, np.median(difference), 100 * darkened))
-        # Casts a shadow on the floor, and leaves the rest of it alone.
+        # Casts a shadow on the floor where hard's (VTK's mappers') falls, and
+        # leaves the rest of it alone.
         shadow = floor & (shaded < 0.75 * floor_only)
-        if options.get("casts", True) is True and shadow.sum() < 15:
-            failures.append("%s: no shadow on the floor (%d pixels)" % (label, shadow.sum()))
+        shadows[(case, name)] = shadow
+        casts = options.get("casts", True)
+        agreement = "-"
+        if casts is True:
+            hard = shadows[(case, "hard")]
+            agreement = "%.2f" % ((shadow & hard).sum() / max(1, (shadow | hard).sum()))
+            if shadow.sum() < 15:
+                failures.append("%s: no shadow on the floor (%d pixels)" % (label, shadow.sum()))
+            elif float(agreement) < 0.5:
+                failures.append("%s: its shadow and hard's share %s of their pixels"
+                                % (label, agreement))
         if shadow.sum() > 0.3 * floor.sum():
             failures.append("%s: %.0f%% of the floor darkened" % (label, 100.0 * shadow.mean()))
-        expected = options.get("warns")
-        named = [w for w in warnings if expected and expected in w]
-        if len(named) != (1 if expected else 0) or len(warnings) != len(named):
-            failures.append("%s: %d warning(s), expected %s: %s" % (
-                label, len(warnings), "one naming " + expected if expected else "none",
-                " | ".join(w.strip()[-200:] for w in warnings)))
-        warnings.clear()
-        if errors:
-            failures.append("%s: VTK reported %d error(s), the first: %s"
-                            % (label, len(errors), errors[0].strip()[:300]))
-            errors.clear()
+        # What is drawn as lines or points casts lines' and points' shadows,
+        # never the solid surface's of its faces.
+        solid = options.get("hollow")
+        if solid and (solid, name) in shadows and shadow.sum() > 0.6 * shadows[(solid, name)].sum():
+            failures.append("%s: %d shadow pixels, %.0f%% of the solid %s's: a surface that "
+                            "is not drawn casts" % (label, shadow.sum(), 100.0 * shadow.sum()
+                                                    / max(1, shadows[(solid, name)].sum()),
+                                                    solid))
+        # What casts nothing darkens nothing: not even an outline.
+        if casts is False:
+            if (key, name) not in floors:
+                floors[(key, name)] = render_counted([], name, look)
+            stray = floor & (shaded < floors[(key, name)] - 12.0)
+            if stray.sum() > 4:
+                failures.append("%s: casts nothing, yet %d floor pixels are darker than "
+                                "under %s alone" % (label, stray.sum(), name))
+        # Hidden actors and blocks: the floor is as in the scene without them.
+        if "same_as" in options:
+            alike = render_counted(options["same_as"](), name, options)
+            apart = np.sum(floor & (np.abs(alike - shaded) > 12.0))
+            if apart > 4:
+                failures.append("%s: %d floor pixels differ from the scene without what "
+                                "casts nothing"
+                                % (label, apart))
+        check_messages(label, options.get("warns"))
         # Receives: under the plate, lit pixels go dark (VTK's light has no
         # ambient part here), unlit ones stay.
         receives = options.get("receives", True)
         if receives is not None:
-            under = brightness(render(build() + [shade()], name, peeling, view, viewport))
+            under = render_counted(build() + [shade()], name, options)
             warnings.clear()  # the same as above, from a new pass
             kept = np.median(under[lit_actor] / plain[lit_actor])
             if (receives and kept > 0.3) or (not receives and kept < 0.9):
@@ -550,12 +768,14 @@ for case, build, *options in CASES:
                 failures.append("%s, under a plate: VTK reported %d error(s), the first: %s"
                                 % (label, len(errors), errors[0].strip()[:300]))
                 errors.clear()
-        print("%-40s %-9s actor median diff %4.1f, %3.0f%% darkened; floor shadow %4d px; "
+        print("%-40s %-17s actor diff %4.1f, %3.0f%% darker; shadow %4d px, %s of hard's; "
               "under a plate %s" % (case, name, np.median(difference), 100 * darkened,
-                                    shadow.sum(), "-" if receives is None else "%.2f" % kept))
+                                    shadow.sum(), agreement,
+                                    "-" if receives is None else "%.2f" % kept))
 
+print("%d cases x %d techniques, %d renders in %.0f s" % (len(cases), len(techniques), renders,
+                                                       time.time() - start))
 if failures:
     print("\n".join("FAIL: " + f for f in failures))
     sys.exit(1)
-print("ok: %d cases x %d techniques look as plain VTK draws them, plus their shadows"
-      % (len(CASES), len(TECHNIQUES)))
+print("ok: every case under every technique looks as plain VTK draws it, plus its shadow")
