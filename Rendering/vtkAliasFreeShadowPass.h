@@ -217,6 +217,7 @@ protected:
   }
   std::string GetCameraPassImplementation() override;
   bool SupportsPointLights() const override { return true; }
+  bool TakesCasterGeometry() const override { return true; }
   ReceiverShading GetReceiverShading(const vtkShadowShaderSources& sources) override;
   void SetReceiverShadingUniforms(vtkShaderProgram* program, vtkProp* prop) override;
   void ReceiversDrawn() override;

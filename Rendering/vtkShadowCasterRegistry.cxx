@@ -250,6 +250,12 @@ void vtkShadowCasterRegistry::AddActor(vtkProp* prop, vtkActor* actor, vtkMatrix
   // Glyph mappers: every instance, placed as the mapper places it.
   if (auto* glyphs = vtkGlyph3DMapper::SafeDownCast(mapper))
   {
+    if (!this->BuildGlyphInstances)
+    {
+      this->FacesOnly =
+        this->FacesOnly && caster.Faces && vtkShadowGlyphInstances::DrawsFacesOnly(glyphs);
+      return;
+    }
     if (vtkPolyData* instances = this->Glyphs->Get(glyphs))
     {
       caster.Data = instances;
@@ -257,7 +263,9 @@ void vtkShadowCasterRegistry::AddActor(vtkProp* prop, vtkActor* actor, vtkMatrix
     }
     else
     {
-      this->FacesOnly = false; // without a source, VTK's mapper draws a line
+      // Without a source VTK's mapper draws a line; too many instances
+      // (reported) cast as VTK draws them, through the depth map.
+      this->FacesOnly = false;
     }
     return;
   }

@@ -16,8 +16,8 @@
  *   block of a composite mapper, block visibility and opacity inherited as
  *   the mapper does; each visible part of a vtkAssembly, and of composite
  *   props that list their parts, such as vtkAxesActor; a vtkGlyph3DMapper's
- *   instances, each at its own transform, as one mesh; vtkDataSetMapper's
- *   surface) with its model matrix, for techniques that derive their own
+ *   instances, each at its own transform, as one mesh, for the techniques
+ *   that take caster geometry; vtkDataSetMapper's surface) with its model matrix, for techniques that derive their own
  *   data from it (a topology aware mesh, an edge table, triangles),
  *   cached with vtkShadowCasterCache until the data changes. Its Faces flag
  *   says whether the actor draws the polygons and strips filled: faces
@@ -98,6 +98,11 @@ public:
   /// Collect this frame's casters from the renderer's visible props.
   void Update(vtkRenderer* renderer);
 
+  /// Whether glyph mappers' instances are built into casters' meshes (on,
+  /// the default), or left to the mappers, which draw them in every map
+  /// (for techniques that take no caster geometry).
+  void SetBuildGlyphInstances(bool build) { this->BuildGlyphInstances = build; }
+
   /// Every visible prop, in the view or not.
   const std::vector<vtkProp*>& GetProps() const { return this->Props; }
   /// The polydata opaque visible actors draw, which cast.
@@ -131,6 +136,7 @@ private:
   std::vector<vtkProp*> DepthMapProps;
   std::vector<vtkShadowCaster> Translucent;
   bool FacesOnly = true; ///< the prop being added draws faces only, so far
+  bool BuildGlyphInstances = true;
   std::unique_ptr<vtkShadowGlyphInstances> Glyphs;
 
   /// Each polydata's check, kept until it is modified: refused and reported once.

@@ -29,6 +29,10 @@
 
 namespace
 {
+// The most points the instances' mesh may have (16.8 million: a quarter
+// GiB of points, and techniques keep several times that per face).
+constexpr double MaximumPoints = 1 << 24;
+
 // The point data array the mapper reads for `index` (vtkGlyph3DMapper::SCALE,
 // ...), by name or by attribute, as vtkAlgorithm::GetInputArrayToProcess() finds it.
 vtkDataArray* MapperArray(vtkGlyph3DMapper* mapper, int index, vtkDataSet* input)
@@ -262,6 +266,20 @@ vtkSmartPointer<vtkPolyData> vtkShadowGlyphInstances::Build(vtkGlyph3DMapper* ma
     collect(data);
   }
 
+  double total = 0.0;
+  for (size_t k = 0; k < sources.size(); ++k)
+  {
+    total += sources[k] ? static_cast<double>(placed[k].size()) * sources[k]->GetNumberOfPoints()
+                        : 0.0;
+  }
+  if (total > MaximumPoints)
+  {
+    vtkErrorWithObjectMacro(mapper,
+      "its " << total << " instanced points exceed the " << MaximumPoints
+             << " the shadow techniques take as one mesh: its glyphs cast through the light's "
+                "depth map only (as lines and points do), not as faces.");
+    return nullptr;
+  }
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
   vtkNew<vtkPoints> points;
   points->SetDataTypeToFloat();
@@ -283,6 +301,25 @@ vtkSmartPointer<vtkPolyData> vtkShadowGlyphInstances::Build(vtkGlyph3DMapper* ma
   mesh->SetPolys(polys);
   mesh->SetStrips(strips);
   return mesh;
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowGlyphInstances::DrawsFacesOnly(vtkGlyph3DMapper* mapper)
+{
+  bool faces = false;
+  for (vtkPolyData* source : Sources(mapper))
+  {
+    if (!source)
+    {
+      continue;
+    }
+    if (source->GetNumberOfLines() + source->GetNumberOfVerts() > 0)
+    {
+      return false;
+    }
+    faces = faces || source->GetNumberOfPolys() + source->GetNumberOfStrips() > 0;
+  }
+  return faces;
 }
 
 //------------------------------------------------------------------------------

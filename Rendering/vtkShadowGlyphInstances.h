@@ -16,7 +16,9 @@
  * transform vtkOpenGLGlyph3DMapper gives each instance: translate, rotate,
  * scale. Polygons, strips, lines and vertices are all kept, in the
  * actor's model coordinates. Levels of detail and culling are not applied:
- * every instance casts at full resolution.
+ * every instance casts at full resolution. Instances of more than 2^24
+ * points in all make no mesh (one error naming the mapper): they cast
+ * through the light's depth map only.
  */
 
 #ifndef vtkShadowGlyphInstances_h
@@ -35,7 +37,7 @@ class vtkShadowGlyphInstances
 {
 public:
   /// The instances' mesh, built again only when the mapper, its input or
-  /// its sources change. Null when the mapper draws nothing.
+  /// its sources change. Null when the mapper draws nothing, or too much.
   vtkPolyData* Get(vtkGlyph3DMapper* mapper);
 
   /// Forget mappers gone since.
@@ -43,6 +45,10 @@ public:
 
   /// The instances' mesh, built now.
   static vtkSmartPointer<vtkPolyData> Build(vtkGlyph3DMapper* mapper);
+
+  /// Whether the mapper's sources hold faces and nothing else (no lines or
+  /// vertices): what it draws is faces only.
+  static bool DrawsFacesOnly(vtkGlyph3DMapper* mapper);
 
 private:
   struct Entry

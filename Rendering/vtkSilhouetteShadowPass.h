@@ -213,6 +213,7 @@ protected:
   bool RenderShadowMaps(const vtkRenderState* s) override;
   std::string GetVisibilityDeclarations() override;
   bool SupportsPointLights() const override { return true; }
+  bool TakesCasterGeometry() const override { return true; }
   std::vector<std::string> GetReceiverExtensions() const override
   {
     // The depth map's four comparisons: textureGather on a shadow sampler.

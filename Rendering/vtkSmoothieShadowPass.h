@@ -147,6 +147,7 @@ protected:
 
   bool RenderShadowMaps(const vtkRenderState* s) override;
   bool SupportsPointLights() const override { return true; }
+  bool TakesCasterGeometry() const override { return true; }
   std::string GetVisibilityDeclarations() override;
   std::vector<std::string> GetReceiverExtensions() const override
   {

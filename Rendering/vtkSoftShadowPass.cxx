@@ -544,6 +544,7 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   budget.Units = [this](const vtkShadowMapManager::Light& light)
   { return this->ReceiverTextures(light.Point); };
   this->Maps->Update(renderer, budget, this->Parallel.get());
+  this->Casters->SetBuildGlyphInstances(this->TakesCasterGeometry());
   this->Casters->Update(renderer);
   auto& shadowed = this->Maps->GetLights();
   const int points = this->Maps->GetNumberOfSkippedPointLights();

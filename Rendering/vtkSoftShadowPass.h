@@ -376,6 +376,10 @@ protected:
    */
   virtual bool SupportsPointLights() const { return false; }
 
+  /// Whether the technique takes the casters' polydata (its own topology,
+  /// edges or triangles): then the registry builds glyph instances' meshes.
+  virtual bool TakesCasterGeometry() const { return false; }
+
   ///@{
   /**
    * Texture units the technique's receivers read for one shadowed light (a
