@@ -25,9 +25,9 @@
 #include "vtkShadowMapManager.h"
 #include "vtkShadowSampling.h"
 #include "vtkShadowScreenBuffers.h"
+#include "vtkShadowVTKVersion.h"
 #include "vtkTextureObject.h"
 #include "vtkTriangleFilter.h"
-#include "vtkShadowVTKVersion.h"
 
 #include "vtkAliasFreeCastersFS.h"
 #include "vtkAliasFreeCastersGS.h"
@@ -393,7 +393,8 @@ std::string vtkAliasFreeShadowPass::GetVisibilityExpression(int slot)
   const std::string beyond = light.Point
     ? "vtkShadowCubeLookup(" + map + ", vtkShadowCubeCenter[" + m +
       "], vtkShadowPositionWC, vtkShadowNormalWC, vtkShadowCubeTexel, vtkShadowNormalBias, "
-      "vtkShadowDistanceBias, vtkShadowCubeRange[" + m + "], vtkShadowPCFRadius)"
+      "vtkShadowDistanceBias, vtkShadowCubeRange[" +
+      m + "], vtkShadowPCFRadius)"
     : "vtkShadowLookup(" + map + ", vtkShadowWorldToMap[" + i + "], vtkShadowReceiver(" + i +
       ", vtkShadowPositionWC, vtkShadowNormalWC), vtkShadowPCFRadius)";
   return "min(" + exact + ", " + beyond + ")";

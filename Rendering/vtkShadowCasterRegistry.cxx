@@ -19,8 +19,8 @@
 #include "vtkNew.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
-#include "vtkProperty.h"
 #include "vtkPropCollection.h"
+#include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkShadowGlyphInstances.h"
 #include "vtkShadowMatrices.h"
@@ -83,8 +83,7 @@ void vtkShadowCasterRegistry::AddBlocks(vtkDataObject* node, bool visible, bool 
     child->SkipEmptyNodesOff();
     for (child->InitTraversal(); !child->IsDoneWithTraversal(); child->GoToNextItem())
     {
-      this->AddBlocks(
-        child->GetCurrentDataObject(), visible, opaque, flatIndex, attributes, actor);
+      this->AddBlocks(child->GetCurrentDataObject(), visible, opaque, flatIndex, attributes, actor);
     }
     return;
   }

@@ -12,22 +12,23 @@
  *   VTK's own mappers (the light's depth map: everything opaque casts
  *   there as it is drawn, lines, points, imposters, glyphs and image
  *   slices too).
- * - GetCasters(): each polydata an opaque, visible actor draws (each visible
- *   block of a composite mapper, block visibility and opacity inherited as
- *   the mapper does; each visible part of a vtkAssembly, and of composite
- *   props that list their parts, such as vtkAxesActor; a vtkGlyph3DMapper's
- *   instances, each at its own transform, as one mesh, for the techniques
- *   that take caster geometry; vtkDataSetMapper's surface) with its model matrix, for techniques that derive their own
- *   data from it (a topology aware mesh, an edge table, triangles),
- *   cached with vtkShadowCasterCache until the data changes. Its Faces flag
- *   says whether the actor draws the polygons and strips filled: faces
- *   drawn as wireframe or points, and imposter mappers (spheres, sticks,
- *   point Gaussians), cast only what they draw, through the depth map.
+ * - GetCasters(): each polydata an opaque, visible actor draws (each
+ *   visible block of a composite mapper, block visibility and opacity
+ *   inherited as the mapper does; each visible part of a vtkAssembly, and of
+ *   composite props that list their parts, such as vtkAxesActor; a
+ *   vtkGlyph3DMapper's instances, each at its own transform, as one mesh,
+ *   for the techniques that take caster geometry; vtkDataSetMapper's
+ *   surface) with its model matrix, for techniques that derive their own
+ *   data from it (a topology aware mesh, an edge table, triangles), cached
+ *   with vtkShadowCasterCache until the data changes. Its Faces flag says
+ *   whether the actor draws the polygons and strips filled: faces drawn as
+ *   wireframe or points, and imposter mappers (spheres, sticks, point
+ *   Gaussians), cast only what they draw, through the depth map.
  * - GetDepthMapProps(): the props that draw something techniques cannot
  *   take as faces (lines, points, faces not drawn filled, mappers other
- *   than polydata mappers): techniques that do not draw the whole scene's
- *   depth map themselves draw these into one, so that they cast as `hard`
- *   casts them.
+ *   than polydata mappers): a technique whose shadows come from faces
+ *   alone (aliasfree) draws these into a depth map of their own, so that
+ *   they cast as `hard` casts them.
  * - Translucent actors and blocks are drawn and receive shadows but cast
  *   none, as in VTK: they are not casters; GetTranslucent() lists their
  *   polydata for those that need every drawn surface (the ray-cast truth).

@@ -16,8 +16,8 @@
 #include "vtkShadowMatrices.h"
 #include "vtkShadowShaderHooks.h"
 #include "vtkShadowStage.h"
-#include "vtkTextureObject.h"
 #include "vtkShadowVTKVersion.h"
+#include "vtkTextureObject.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -292,9 +292,9 @@ bool vtkShadowDrawer::Draw(const vtkRenderState* s, const vtkShadowDrawSetup& se
     const glm::dmat4 worldToClip = frustum ? frustum->Projection * frustum->View : glm::dmat4(1.0);
     for (const vtkShadowDrawSetup::GeometryDraw& draw : setup.Geometry)
     {
-      ok = (draw.Placed
-               ? draw.Geometry->Draw(context, worldToClip, draw.ModelToWorld, draw.Uniforms)
-               : draw.Geometry->Draw(context, worldToClip)) &&
+      ok =
+        (draw.Placed ? draw.Geometry->Draw(context, worldToClip, draw.ModelToWorld, draw.Uniforms)
+                     : draw.Geometry->Draw(context, worldToClip)) &&
         ok;
     }
   }

@@ -238,9 +238,9 @@ vtkSmartPointer<vtkPolyData> vtkShadowGlyphInstances::Build(vtkGlyph3DMapper* ma
       if (index && sources.size() > 1)
       {
         const double* value = index->GetTuple(id);
-        which = vtkMath::ClampValue(static_cast<int>(vtkMath::Norm(value,
-                                      index->GetNumberOfComponents())),
-          0, static_cast<int>(sources.size()) - 1);
+        which = vtkMath::ClampValue(
+          static_cast<int>(vtkMath::Norm(value, index->GetNumberOfComponents())), 0,
+          static_cast<int>(sources.size()) - 1);
       }
       if (sources[which])
       {
@@ -269,8 +269,8 @@ vtkSmartPointer<vtkPolyData> vtkShadowGlyphInstances::Build(vtkGlyph3DMapper* ma
   double total = 0.0;
   for (size_t k = 0; k < sources.size(); ++k)
   {
-    total += sources[k] ? static_cast<double>(placed[k].size()) * sources[k]->GetNumberOfPoints()
-                        : 0.0;
+    total +=
+      sources[k] ? static_cast<double>(placed[k].size()) * sources[k]->GetNumberOfPoints() : 0.0;
   }
   if (total > MaximumPoints)
   {

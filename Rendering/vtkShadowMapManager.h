@@ -169,10 +169,10 @@ public:
 
   ///@{
   /// The same for any texture a technique keeps (say, in Light::Textures).
-  static void AllocateCube(vtkOpenGLRenderWindow* context,
-    vtkSmartPointer<vtkTextureObject>& cube, int size, bool packed);
-  static void AllocateDepth(vtkOpenGLRenderWindow* context,
-    vtkSmartPointer<vtkTextureObject>& map, int size, bool linear);
+  static void AllocateCube(
+    vtkOpenGLRenderWindow* context, vtkSmartPointer<vtkTextureObject>& cube, int size, bool packed);
+  static void AllocateDepth(
+    vtkOpenGLRenderWindow* context, vtkSmartPointer<vtkTextureObject>& map, int size, bool linear);
   ///@}
 
   /**

@@ -18,9 +18,9 @@
 #include "vtkShadowGeometry.h"
 #include "vtkShadowMapManager.h"
 #include "vtkShadowScreenBuffers.h"
+#include "vtkShadowVTKVersion.h"
 #include "vtkTextureObject.h"
 #include "vtkTopologyAwareMeshFilter.h"
-#include "vtkShadowVTKVersion.h"
 
 #include "vtkSilhouetteBandsGS.h"
 #include "vtkSilhouetteCommon.h"

@@ -24,8 +24,8 @@
 #include "vtkShadowGeometry.h"
 #include "vtkShadowMapManager.h"
 #include "vtkShadowScreenBuffers.h"
-#include "vtkTextureObject.h"
 #include "vtkShadowVTKVersion.h"
+#include "vtkTextureObject.h"
 
 #include "vtkSmoothieEdgesFS.h"
 #include "vtkSmoothieEdgesGS.h"
@@ -38,9 +38,9 @@
 
 #include <algorithm>
 #include <array>
-#include <deque>
 #include <chrono>
 #include <cmath>
+#include <deque>
 #include <memory>
 #include <unordered_map>
 #include <vector>
@@ -73,9 +73,9 @@ struct CasterEdges
 {
   vtkSmartPointer<vtkLightSilhouetteFilter> Filter; ///< over the merged faces; keeps its tree
   vtkSmartPointer<vtkDataArray> FaceNormals;        ///< per edge: its two faces' normals
-  std::deque<std::vector<SlotEdges>> Placements; ///< a deque: taken ones stay put
-  unsigned long Frame = 0; ///< the frame that last took a placement
-  size_t Taken = 0;        ///< placements taken in that frame
+  std::deque<std::vector<SlotEdges>> Placements;    ///< a deque: taken ones stay put
+  unsigned long Frame = 0;                          ///< the frame that last took a placement
+  size_t Taken = 0;                                 ///< placements taken in that frame
 
   /// The next placement's slots this frame; those of actors gone are dropped.
   std::vector<SlotEdges>& TakePlacement(unsigned long frame)

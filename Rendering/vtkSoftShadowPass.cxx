@@ -34,10 +34,10 @@
 #include "vtkShadowScreenBuffers.h"
 #include "vtkShadowShaderHooks.h"
 #include "vtkShadowStage.h"
+#include "vtkShadowVTKVersion.h"
 #include "vtkTextureObject.h"
 #include "vtkTranslucentPass.h"
 #include "vtkVolumetricPass.h"
-#include "vtkShadowVTKVersion.h"
 
 #include "vtkShadowCubeLookupFS.h"
 #include "vtkShadowNormalOffsetFS.h"
@@ -719,8 +719,8 @@ bool vtkSoftShadowPass::RenderDepthMap(const vtkRenderState* s, const vtkShadowF
   vtkTextureObject* target, bool beyondFaces)
 {
   vtkShadowDrawSetup setup;
-  setup.Draw = beyondFaces ? vtkShadowDrawSetup::Props::DepthMapCasters
-                           : vtkShadowDrawSetup::Props::Casters;
+  setup.Draw =
+    beyondFaces ? vtkShadowDrawSetup::Props::DepthMapCasters : vtkShadowDrawSetup::Props::Casters;
   setup.View = &frustum;
   setup.Depth = target;
   setup.Stage = this->DepthStage.get();
@@ -751,8 +751,8 @@ bool vtkSoftShadowPass::RenderDistanceCube(const vtkRenderState* s,
   const std::array<vtkShadowFrustum, 6>& faces, vtkTextureObject* cube, bool beyondFaces)
 {
   vtkShadowDrawSetup setup;
-  setup.Draw = beyondFaces ? vtkShadowDrawSetup::Props::DepthMapCasters
-                           : vtkShadowDrawSetup::Props::Casters;
+  setup.Draw =
+    beyondFaces ? vtkShadowDrawSetup::Props::DepthMapCasters : vtkShadowDrawSetup::Props::Casters;
   setup.Faces = &faces;
   setup.Colours = { cube };
   // Nothing drawn is infinitely far (packed: the largest value): lit.

@@ -63,7 +63,7 @@ struct SceneGlyphs
 {
   std::array<int, 3> Count{ 0, 0, 0 }; ///< instances along x, y, z; 0: no glyphs
   Vector3 Spacing{ 1.0, 1.0, 1.0 };
-  bool Turn = false;                    ///< each instance pointed its own way
+  bool Turn = false;                       ///< each instance pointed its own way
   std::array<double, 2> Sizes{ 1.0, 1.0 }; ///< each instance scaled within
 };
 
