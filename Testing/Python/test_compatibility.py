@@ -212,11 +212,17 @@ def case_molecule():
     return [actor_for(mapper)]
 
 
-def case_glyphs():
+def small_cube():
+    """A glyph source: a cube 0.3 wide."""
     cube = vtkCubeSource()
     cube.SetXLength(0.3)
     cube.SetYLength(0.3)
     cube.SetZLength(0.3)
+    return cube
+
+
+def case_glyphs():
+    cube = small_cube()
     mapper = vtkGlyph3DMapper()
     mapper.SetInputData(three_points())
     mapper.SetSourceConnection(cube.GetOutputPort())
@@ -260,10 +266,7 @@ def case_indexed_glyphs():
     for i in (0, 1, 0):
         index.InsertNextValue(i)
     data.GetPointData().AddArray(index)
-    cube = vtkCubeSource()
-    cube.SetXLength(0.3)
-    cube.SetYLength(0.3)
-    cube.SetZLength(0.3)
+    cube = small_cube()
     sphere = vtkSphereSource()
     sphere.SetRadius(0.22)
     mapper = vtkGlyph3DMapper()
