@@ -11,7 +11,7 @@
 #include "vtkCompositeDataDisplayAttributes.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataObjectTree.h"
-#include "vtkDataObjectTreeIterator.h"
+#include "vtkDataObjectTreeRange.h"
 #include "vtkDataSetMapper.h"
 #include "vtkGlyph3DMapper.h"
 #include "vtkMath.h"
@@ -21,6 +21,7 @@
 #include "vtkPolyDataMapper.h"
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
+#include "vtkRange.h"
 #include "vtkRenderer.h"
 #include "vtkShadowGlyphInstances.h"
 #include "vtkShadowMatrices.h"
@@ -76,14 +77,10 @@ void vtkShadowCasterRegistry::AddBlocks(vtkDataObject* node, bool visible, bool 
   }
   if (auto* tree = vtkDataObjectTree::SafeDownCast(node))
   {
-    vtkSmartPointer<vtkDataObjectTreeIterator> child;
-    child.TakeReference(tree->NewTreeIterator());
-    child->TraverseSubTreeOff();
-    child->VisitOnlyLeavesOff();
-    child->SkipEmptyNodesOff();
-    for (child->InitTraversal(); !child->IsDoneWithTraversal(); child->GoToNextItem())
+    // Its direct children, empty ones too.
+    for (vtkDataObject* child : vtk::Range(tree, vtk::DataObjectTreeOptions::None))
     {
-      this->AddBlocks(child->GetCurrentDataObject(), visible, opaque, flatIndex, attributes, actor);
+      this->AddBlocks(child, visible, opaque, flatIndex, attributes, actor);
     }
     return;
   }

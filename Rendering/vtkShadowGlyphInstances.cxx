@@ -5,11 +5,11 @@
 #include "vtkBitArray.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
-#include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
+#include "vtkCompositeDataSetRange.h"
 #include "vtkDataArray.h"
 #include "vtkDataObjectTree.h"
-#include "vtkDataObjectTreeIterator.h"
+#include "vtkDataObjectTreeRange.h"
 #include "vtkDataSet.h"
 #include "vtkGlyph3DMapper.h"
 #include "vtkIdList.h"
@@ -18,6 +18,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkRange.h"
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat4x4.hpp>
@@ -59,14 +60,9 @@ std::vector<vtkPolyData*> Sources(vtkGlyph3DMapper* mapper)
   {
     if (vtkDataObjectTree* tree = mapper->GetSourceTableTree())
     {
-      vtkSmartPointer<vtkDataObjectTreeIterator> it;
-      it.TakeReference(tree->NewTreeIterator());
-      it->TraverseSubTreeOff();
-      it->VisitOnlyLeavesOff();
-      it->SkipEmptyNodesOff();
-      for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+      for (vtkDataObject* child : vtk::Range(tree, vtk::DataObjectTreeOptions::None))
       {
-        sources.push_back(vtkPolyData::SafeDownCast(it->GetCurrentDataObject()));
+        sources.push_back(vtkPolyData::SafeDownCast(child));
       }
     }
     return sources;
@@ -251,13 +247,11 @@ vtkSmartPointer<vtkPolyData> vtkShadowGlyphInstances::Build(vtkGlyph3DMapper* ma
   vtkDataObject* input = mapper->GetInputDataObject(0, 0);
   if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
   {
-    vtkSmartPointer<vtkCompositeDataIterator> it;
-    it.TakeReference(composite->NewIterator());
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    for (vtkDataObject* leaf : vtk::Range(composite))
     {
-      if (auto* leaf = vtkDataSet::SafeDownCast(it->GetCurrentDataObject()))
+      if (auto* data = vtkDataSet::SafeDownCast(leaf))
       {
-        collect(leaf);
+        collect(data);
       }
     }
   }
