@@ -387,16 +387,8 @@ std::string vtkAliasFreeShadowPass::GetVisibilityExpression(int slot)
   {
     return exact;
   }
-  const auto& light = this->Maps->GetLights()[slot];
-  const std::string i = std::to_string(slot), m = std::to_string(light.MapIndex);
-  const std::string map = "aliasfreeBeyondFaces" + i;
-  const std::string beyond = light.Point
-    ? "vtkShadowCubeLookup(" + map + ", vtkShadowCubeCenter[" + m +
-      "], vtkShadowPositionWC, vtkShadowNormalWC, vtkShadowCubeTexel, vtkShadowNormalBias, "
-      "vtkShadowDistanceBias, vtkShadowCubeRange[" +
-      m + "], vtkShadowPCFRadius)"
-    : "vtkShadowLookup(" + map + ", vtkShadowWorldToMap[" + i + "], vtkShadowReceiver(" + i +
-      ", vtkShadowPositionWC, vtkShadowNormalWC), vtkShadowPCFRadius)";
+  const std::string beyond =
+    this->GetHardLookupExpression(slot, "aliasfreeBeyondFaces" + std::to_string(slot));
   return "min(" + exact + ", " + beyond + ")";
 }
 

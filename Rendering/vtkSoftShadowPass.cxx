@@ -884,9 +884,7 @@ std::string vtkSoftShadowPass::GetVisibilityExpression(int slot)
   const std::string hard = light.Point
     ? std::string(this->IsFirstPointLight(slot) ? "vtkShadowCubeHardAll" : "vtkShadowCubeHardOf") +
       "(vtkShadowPositionWC, vtkShadowNormalWC, " + m + ")"
-    : "vtkShadowLookup(vtkShadowMap[" + m + "], vtkShadowWorldToMap[" + i +
-      "], vtkShadowReceiver(" + i + ", vtkShadowPositionWC, vtkShadowNormalWC), " +
-      "vtkShadowPCFRadius)";
+    : this->GetHardLookupExpression(slot, "vtkShadowMap[" + m + "]");
   if (this->UsesScreenSpace())
   {
     const std::string screen =
@@ -903,6 +901,23 @@ std::string vtkSoftShadowPass::GetVisibilityExpression(int slot)
       ", vtkShadowPositionWC, vtkShadowNormalWC)";
   }
   return hard;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkSoftShadowPass::GetHardLookupExpression(int slot, const std::string& map) const
+{
+  const auto& light = this->Maps->GetLights()[slot];
+  const std::string i = std::to_string(slot);
+  if (light.Point)
+  {
+    const std::string m = std::to_string(light.MapIndex);
+    return "vtkShadowCubeLookup(" + map + ", vtkShadowCubeCenter[" + m +
+      "], vtkShadowPositionWC, vtkShadowNormalWC, vtkShadowCubeTexel, vtkShadowNormalBias, "
+      "vtkShadowDistanceBias, vtkShadowCubeRange[" +
+      m + "], vtkShadowPCFRadius)";
+  }
+  return "vtkShadowLookup(" + map + ", vtkShadowWorldToMap[" + i + "], vtkShadowReceiver(" + i +
+    ", vtkShadowPositionWC, vtkShadowNormalWC), vtkShadowPCFRadius)";
 }
 
 //------------------------------------------------------------------------------

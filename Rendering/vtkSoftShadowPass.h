@@ -414,6 +414,15 @@ protected:
   virtual std::string GetVisibilityExpression(int slot);
 
   /**
+   * GLSL expression for the framework's hard lookup of shadowed light
+   * `slot` (with GetPCFRadius() and the receiver offset) in `map`, a
+   * sampler the receivers declare that is laid out as the light's own map:
+   * a depth texture with comparison, or for point lights a cube of squared
+   * distances.
+   */
+  std::string GetHardLookupExpression(int slot, const std::string& map) const;
+
+  /**
    * Whether shadowed light `slot` is the first point light: the one whose
    * visibility expression fills every cube map's in one loop, which the
    * others then read (vtkShadowCubeLookupAll in vtkSoftShadowReceiverFS.glsl,
