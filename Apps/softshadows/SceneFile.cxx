@@ -238,7 +238,15 @@ void ReadModelFile(const Json& value, const std::string& path,
 
 // At most this many glyph instances an actor (a million: llvmpipe draws
 // them in seconds, and the instances' mesh stays under a few GiB).
-constexpr double MaximumGlyphs = 1.0e6;
+constexpr int MaximumGlyphs = 1000000;
+
+// A positive number or [x, y, z] of them (`scale`, `spacing`).
+Vector3 ReadPositive3(const Json& value, const std::string& path)
+{
+  CheckValue(value, ValueType::Size3, Range::Positive(), path);
+  const auto components = Components(value, 3);
+  return { components[0], components[1], components[2] };
+}
 
 SceneGlyphs ReadGlyphs(const Json& value, const std::string& path)
 {
@@ -254,18 +262,17 @@ SceneGlyphs ReadGlyphs(const Json& value, const std::string& path)
   double total = 1.0;
   for (int k = 0; k < 3; ++k)
   {
-    glyphs.Count[k] = ReadInteger(count[k], IndexPath(countPath, k), Range::Between(1, 1000000));
+    glyphs.Count[k] =
+      ReadInteger(count[k], IndexPath(countPath, k), Range::Between(1, MaximumGlyphs));
     total *= glyphs.Count[k];
   }
   if (total > MaximumGlyphs)
   {
-    throw InputError(countPath, "at most 1000000 instances in all");
+    throw InputError(countPath, "at most " + std::to_string(MaximumGlyphs) + " instances in all");
   }
   if (value.contains("spacing"))
   {
-    CheckValue(value["spacing"], ValueType::Size3, Range::Positive(), FieldPath(path, "spacing"));
-    const auto spacing = Components(value["spacing"], 3);
-    glyphs.Spacing = { spacing[0], spacing[1], spacing[2] };
+    glyphs.Spacing = ReadPositive3(value["spacing"], FieldPath(path, "spacing"));
   }
   if (value.contains("turn"))
   {
@@ -342,9 +349,7 @@ SceneActor ReadActor(
   }
   if (value.contains("scale"))
   {
-    CheckValue(value["scale"], ValueType::Size3, Range::Positive(), FieldPath(path, "scale"));
-    const auto scale = Components(value["scale"], 3);
-    actor.Scale = { scale[0], scale[1], scale[2] };
+    actor.Scale = ReadPositive3(value["scale"], FieldPath(path, "scale"));
   }
   if (value.contains("color"))
   {
