@@ -9,6 +9,7 @@ set(softshadows_rendering_classes
   vtkOmnidirectionalShadowPass
   vtkRayCastLightVisibility
   vtkReferenceShadowPass
+  vtkShadowLightSize
   vtkShadowTechniqueCatalog
   vtkSilhouetteShadowPass
   vtkSmoothieShadowPass

@@ -18,7 +18,7 @@
 #include "vtkRenderer.h"
 #include "vtkSMPTools.h"
 #include "vtkShadowCasterRegistry.h"
-#include "vtkShadowMapManager.h"
+#include "vtkShadowLightSize.h"
 #include "vtkShadowMatrices.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTriangleFilter.h"
@@ -309,7 +309,7 @@ int vtkRayCastLightVisibility::RequestData(
   LightShape light;
   const double* p = source->GetTransformedPosition();
   const double* f = source->GetTransformedFocalPoint();
-  const double radius = vtkShadowMapManager::GetRadius(source);
+  const double radius = vtkShadowLightSize::GetRadius(source);
   light.Directional = !source->GetPositional();
   light.Position = glm::dvec3(p[0], p[1], p[2]);
   const glm::dvec3 beam = glm::dvec3(f[0], f[1], f[2]) - light.Position;
@@ -327,7 +327,7 @@ int vtkRayCastLightVisibility::RequestData(
   else
   {
     light.Radius = radius;
-    light.Spot = source->GetConeAngle() < 90.0 && glm::length(beam) > 0.0;
+    light.Spot = !vtkShadowLightSize::IsPointLight(source) && glm::length(beam) > 0.0;
     light.Axis = light.Spot ? glm::normalize(beam) : glm::dvec3(0.0);
     light.ConeAngle = glm::radians(source->GetConeAngle());
   }

@@ -11,7 +11,7 @@
  * it, Samples shadow rays (stratified, jittered per pixel with a fixed seed)
  * towards the light give the fraction of it that is visible:
  * - spot and point lights: a sphere of the light's radius
- *   (vtkSoftShadowPass::GetRadius()) around its position, sampled uniformly
+ *   (vtkShadowLightSize::GetRadius()) around its position, sampled uniformly
  *   over the solid angle it subtends;
  * - directional lights: a cone of directions of that angular radius.
  * Rays leaving below the surface's side the camera sees are blocked by the

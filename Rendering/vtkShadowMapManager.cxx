@@ -3,14 +3,13 @@
 #include "vtkShadowMapManager.h"
 
 #include "vtkCamera.h"
-#include "vtkInformation.h"
-#include "vtkInformationDoubleKey.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMath.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
+#include "vtkShadowLightSize.h"
 #include "vtkShadowParallelMaps.h"
 #include "vtkTextureObject.h"
 
@@ -59,23 +58,10 @@ vtkShadowMapManager::vtkShadowMapManager()
 
 vtkShadowMapManager::~vtkShadowMapManager() = default;
 
-vtkInformationKeyMacro(vtkShadowMapManager, RADIUS, Double);
-
-//------------------------------------------------------------------------------
-double vtkShadowMapManager::GetRadius(vtkLight* light)
-{
-  if (!light || !light->GetInformation()->Has(vtkShadowMapManager::RADIUS()))
-  {
-    return 0.0;
-  }
-  return light->GetInformation()->Get(vtkShadowMapManager::RADIUS());
-}
-
 //------------------------------------------------------------------------------
 double vtkShadowMapManager::Light::GetSize() const
 {
-  return this->Directional ? 2.0 * std::tan(vtkMath::RadiansFromDegrees(this->Radius))
-                           : 2.0 * this->Radius;
+  return vtkShadowLightSize::GetWidth(this->Radius, this->Directional);
 }
 
 //------------------------------------------------------------------------------
@@ -138,13 +124,13 @@ int vtkShadowMapManager::Update(
     light.SceneIndex = sceneIndex;
     light.ShaderIndex = shaderIndex;
     light.Directional = !source->GetPositional();
-    light.Radius = vtkShadowMapManager::GetRadius(source);
+    light.Radius = vtkShadowLightSize::GetRadius(source);
     light.ConeAngle = source->GetConeAngle();
     light.Attenuation = source->GetShadowAttenuation();
     const double* p = source->GetTransformedPosition();
     const double* f = source->GetTransformedFocalPoint();
     light.Position = glm::dvec3(p[0], p[1], p[2]);
-    light.Point = source->GetPositional() && source->GetConeAngle() >= 90.0;
+    light.Point = vtkShadowLightSize::IsPointLight(source);
     glm::dvec3 axis = light.Point ? this->SceneCenter() - light.Position
                                   : glm::dvec3(f[0], f[1], f[2]) - light.Position;
     if (light.Point && !(glm::length(axis) > 0.0))

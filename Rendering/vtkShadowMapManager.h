@@ -25,7 +25,6 @@
 #include <string>     // for std::string
 #include <vector>     // for std::vector
 
-class vtkInformationDoubleKey;
 class vtkLight;
 class vtkOpenGLRenderWindow;
 class vtkRenderer;
@@ -83,15 +82,6 @@ public:
 
   vtkShadowMapManager();
   ~vtkShadowMapManager();
-
-  ///@{
-  /**
-   * The light's size, stored in its information (vtkSoftShadowPass::SetRadius()
-   * and GetRadius() are the public face of this key): 0 when not set.
-   */
-  static vtkInformationDoubleKey* RADIUS();
-  static double GetRadius(vtkLight* light);
-  ///@}
 
   /**
    * What a technique can shadow: whether it shadows point lights, and how

@@ -5,8 +5,6 @@
 #include "vtkAbstractMapper.h"
 #include "vtkCamera.h"
 #include "vtkDualDepthPeelingPass.h"
-#include "vtkInformation.h"
-#include "vtkInformationDoubleKey.h"
 #include "vtkLight.h"
 #include "vtkMatrix4x4.h"
 #include "vtkMultiProcessController.h"
@@ -27,6 +25,7 @@
 #include "vtkShadowDepthStage.h"
 #include "vtkShadowDistanceStage.h"
 #include "vtkShadowDrawer.h"
+#include "vtkShadowLightSize.h"
 #include "vtkShadowMapManager.h"
 #include "vtkShadowMapperCode.h"
 #include "vtkShadowMatrices.h"
@@ -445,28 +444,19 @@ vtkMultiProcessController* vtkSoftShadowPass::GetController() const
 //------------------------------------------------------------------------------
 void vtkSoftShadowPass::SetRadius(double radius, vtkLight* light)
 {
-  if (!light)
-  {
-    return;
-  }
-  if (!(radius >= 0.0)) // also rejects NaN
-  {
-    vtkGenericWarningMacro("vtkSoftShadowPass::SetRadius: radius must be >= 0, got " << radius);
-    return;
-  }
-  light->GetInformation()->Set(vtkShadowMapManager::RADIUS(), radius);
+  vtkShadowLightSize::SetRadius(radius, light);
 }
 
 //------------------------------------------------------------------------------
 double vtkSoftShadowPass::GetRadius(vtkLight* light)
 {
-  return vtkShadowMapManager::GetRadius(light);
+  return vtkShadowLightSize::GetRadius(light);
 }
 
 //------------------------------------------------------------------------------
 vtkInformationDoubleKey* vtkSoftShadowPass::RADIUS()
 {
-  return vtkShadowMapManager::RADIUS();
+  return vtkShadowLightSize::RADIUS();
 }
 
 //------------------------------------------------------------------------------

@@ -31,10 +31,10 @@
  * distances, for the techniques that support them (SupportsPointLights());
  * the others report point lights once with an error and draw them unshadowed.
  *
- * The light's size comes from SetRadius()/GetRadius(), stored in the light's
- * information like vtkOSPRayLightNode does: world units for spot and point
- * lights, angular radius in degrees for directional lights. 0 is a point
- * light. vtkLight::GetShadowAttenuation() is honoured as in vtkShadowMapPass.
+ * The light's size comes from SetRadius()/GetRadius() (vtkShadowLightSize),
+ * stored in the light's information like vtkOSPRayLightNode does: world units
+ * for spot and point lights, angular radius in degrees for directional
+ * lights. 0 is a point light. vtkLight::GetShadowAttenuation() is honoured as in vtkShadowMapPass.
  *
  * A receiver's shader has a limited number of texture units
  * (GL_MAX_TEXTURE_IMAGE_UNITS, and GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS over
@@ -98,6 +98,7 @@ public:
   /**
    * Size of a light, read by every technique. World units for spot and point
    * lights; angular radius in degrees for directional lights. Default 0.
+   * The same functions as vtkShadowLightSize's.
    */
   static vtkInformationDoubleKey* RADIUS();
   static void SetRadius(double radius, vtkLight* light);

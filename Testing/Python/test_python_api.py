@@ -14,7 +14,7 @@ import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (OpenGL factory)
 
 from vtksoftshadows import (vtkContactHardeningShadowPass, vtkFenceSource, vtkHardShadowPass,
                             vtkOmnidirectionalShadowPass, vtkReferenceShadowPass,
-                            vtkShadowTechniqueCatalog, vtkSoftShadowPass)
+                            vtkShadowLightSize, vtkShadowTechniqueCatalog, vtkSoftShadowPass)
 
 import shadowtest as st
 
@@ -46,6 +46,12 @@ light.SetFocalPoint(0, 0, 0)
 light.SetConeAngle(45)
 vtkSoftShadowPass.SetRadius(0.3, light)
 st.check(abs(vtkSoftShadowPass.GetRadius(light) - 0.3) < 1e-12, "radius stored on the light")
+# The pass's light size is vtkShadowLightSize's: one key, one rule.
+st.check(vtkShadowLightSize.GetRadius(light) == vtkSoftShadowPass.GetRadius(light)
+         and vtkShadowLightSize.RADIUS() is vtkSoftShadowPass.RADIUS(), "one light-size key")
+vtkSoftShadowPass.SetRadius(-1.0, light)
+st.check(vtkShadowLightSize.GetRadius(light) == 0.3, "a negative radius is refused")
+st.check(not vtkShadowLightSize.IsPointLight(light), "a 45-degree cone is a spot light")
 renderer.AddLight(light)
 
 camera = renderer.GetActiveCamera()
