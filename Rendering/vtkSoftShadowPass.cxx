@@ -268,9 +268,7 @@ void vtkSoftShadowPass::vtkReceiverStage::PostReplace(vtkShadowShaderSources& so
       }
     }
     dec << vtkShadowSurfaceFS << "\n"
-        << vtkShadowNormalOffsetFS << "\n"
-        << vtkShadowCubeLookupFS << "\n"
-        << vtkSoftShadowReceiverFS << "\n";
+        << vtkSoftShadowPass::GetLightSpaceLookupCode() << vtkSoftShadowReceiverFS << "\n";
     for (const auto& texture : pass->FrameReceiverTextures)
     {
       dec << "uniform " << texture.Sampler << " " << texture.Name << ";\n";
@@ -854,6 +852,12 @@ bool vtkSoftShadowPass::CheckCompute(vtkOpenGLRenderWindow* context)
     this->ComputeReported = true;
   }
   return false;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkSoftShadowPass::GetLightSpaceLookupCode()
+{
+  return std::string(vtkShadowNormalOffsetFS) + "\n" + vtkShadowCubeLookupFS + "\n";
 }
 
 //------------------------------------------------------------------------------

@@ -424,6 +424,13 @@ protected:
   std::string GetHardLookupExpression(int slot, const std::string& map) const;
 
   /**
+   * The framework's light-space lookups in GLSL, for a technique's own
+   * shaders: the receiver offset (vtkShadowNormalOffsetFS.glsl) and the cube
+   * maps of squared distances (vtkShadowCubeLookupFS.glsl).
+   */
+  static std::string GetLightSpaceLookupCode();
+
+  /**
    * Whether shadowed light `slot` is the first point light: the one whose
    * visibility expression fills every cube map's in one loop, which the
    * others then read (vtkShadowCubeLookupAll in vtkSoftShadowReceiverFS.glsl,

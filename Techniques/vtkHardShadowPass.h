@@ -18,8 +18,9 @@
 #define vtkHardShadowPass_h
 
 #include "vtkSoftShadowPass.h"
+#include "vtkSoftShadowsTechniquesModule.h" // for export macro
 
-class VTKSOFTSHADOWSRENDERING_EXPORT vtkHardShadowPass : public vtkSoftShadowPass
+class VTKSOFTSHADOWSTECHNIQUES_EXPORT vtkHardShadowPass : public vtkSoftShadowPass
 {
 public:
   static vtkHardShadowPass* New();

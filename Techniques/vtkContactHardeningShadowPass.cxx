@@ -25,8 +25,6 @@
 #include "vtkContactResolveFS.h"
 #include "vtkContactTileSpreadFS.h"
 #include "vtkContactTilesFS.h"
-#include "vtkShadowCubeLookupFS.h"
-#include "vtkShadowNormalOffsetFS.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -328,9 +326,7 @@ std::string vtkContactHardeningShadowPass::GetCameraPassDeclarations()
     constants("contactPassStarts", in.PassStarts);
     constants("contactPassInverseVariances", in.PassInverseVariances);
   }
-  dec << vtkShadowNormalOffsetFS << "\n"
-      << vtkShadowCubeLookupFS << "\n"
-      << vtkContactDistanceFS << "\n";
+  dec << vtkSoftShadowPass::GetLightSpaceLookupCode() << vtkContactDistanceFS << "\n";
   return dec.str();
 }
 

@@ -48,10 +48,11 @@
 #define vtkSmoothieShadowPass_h
 
 #include "vtkSoftShadowPass.h"
+#include "vtkSoftShadowsTechniquesModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 
-class VTKSOFTSHADOWSRENDERING_EXPORT vtkSmoothieShadowPass : public vtkSoftShadowPass
+class VTKSOFTSHADOWSTECHNIQUES_EXPORT vtkSmoothieShadowPass : public vtkSoftShadowPass
 {
 public:
   static vtkSmoothieShadowPass* New();

@@ -58,10 +58,11 @@
 #define vtkAliasFreeShadowPass_h
 
 #include "vtkSoftShadowPass.h"
+#include "vtkSoftShadowsTechniquesModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 
-class VTKSOFTSHADOWSRENDERING_EXPORT vtkAliasFreeShadowPass : public vtkSoftShadowPass
+class VTKSOFTSHADOWSTECHNIQUES_EXPORT vtkAliasFreeShadowPass : public vtkSoftShadowPass
 {
 public:
   static vtkAliasFreeShadowPass* New();

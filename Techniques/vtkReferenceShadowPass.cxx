@@ -16,9 +16,7 @@
 #include "vtkTextureObject.h"
 #include "vtkShadowVTKVersion.h"
 
-#include "vtkShadowAccumulateFS.h"
-#include "vtkShadowCubeLookupFS.h"
-#include "vtkShadowNormalOffsetFS.h"
+#include "vtkReferenceAccumulateFS.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
@@ -71,11 +69,10 @@ bool vtkReferenceShadowPass::RenderScreenSpace(const vtkRenderState* s)
   vtkInternals& internals = *this->Internals;
   if (!internals.Accumulate)
   {
-    const std::string lookups =
-      std::string(vtkShadowNormalOffsetFS) + "\n" + vtkShadowCubeLookupFS + "\n";
-    internals.Accumulate = this->Screen->CreateQuad(context, lookups + vtkShadowAccumulateFS);
+    const std::string lookups = vtkSoftShadowPass::GetLightSpaceLookupCode();
+    internals.Accumulate = this->Screen->CreateQuad(context, lookups + vtkReferenceAccumulateFS);
     internals.AccumulateCube = this->Screen->CreateQuad(
-      context, lookups + "#define ACCUMULATE_CUBE\n" + vtkShadowAccumulateFS);
+      context, lookups + "#define ACCUMULATE_CUBE\n" + vtkReferenceAccumulateFS);
   }
   if (!internals.Accumulate->Program || !internals.AccumulateCube->Program)
   {

@@ -19,12 +19,12 @@
 #define vtkShadowTechniqueCatalog_h
 
 #include "vtkObject.h"
-#include "vtkSoftShadowsRenderingModule.h" // for export macro
+#include "vtkSoftShadowsTechniquesModule.h" // for export macro
 #include "vtkWrappingHints.h"              // for VTK_NEWINSTANCE
 
 class vtkSoftShadowPass;
 
-class VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowTechniqueCatalog : public vtkObject
+class VTKSOFTSHADOWSTECHNIQUES_EXPORT vtkShadowTechniqueCatalog : public vtkObject
 {
 public:
   static vtkShadowTechniqueCatalog* New();

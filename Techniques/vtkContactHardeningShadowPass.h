@@ -60,11 +60,12 @@
 #define vtkContactHardeningShadowPass_h
 
 #include "vtkSoftShadowPass.h"
+#include "vtkSoftShadowsTechniquesModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 #include <vector> // for std::vector
 
-class VTKSOFTSHADOWSRENDERING_EXPORT vtkContactHardeningShadowPass : public vtkSoftShadowPass
+class VTKSOFTSHADOWSTECHNIQUES_EXPORT vtkContactHardeningShadowPass : public vtkSoftShadowPass
 {
 public:
   static vtkContactHardeningShadowPass* New();

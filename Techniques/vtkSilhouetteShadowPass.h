@@ -48,10 +48,11 @@
 #define vtkSilhouetteShadowPass_h
 
 #include "vtkSoftShadowPass.h"
+#include "vtkSoftShadowsTechniquesModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 
-class VTKSOFTSHADOWSRENDERING_EXPORT vtkSilhouetteShadowPass : public vtkSoftShadowPass
+class VTKSOFTSHADOWSTECHNIQUES_EXPORT vtkSilhouetteShadowPass : public vtkSoftShadowPass
 {
 public:
   static vtkSilhouetteShadowPass* New();

@@ -27,8 +27,9 @@
 #define vtkOmnidirectionalShadowPass_h
 
 #include "vtkSoftShadowPass.h"
+#include "vtkSoftShadowsTechniquesModule.h" // for export macro
 
-class VTKSOFTSHADOWSRENDERING_EXPORT vtkOmnidirectionalShadowPass : public vtkSoftShadowPass
+class VTKSOFTSHADOWSTECHNIQUES_EXPORT vtkOmnidirectionalShadowPass : public vtkSoftShadowPass
 {
 public:
   static vtkOmnidirectionalShadowPass* New();

@@ -36,10 +36,11 @@
 #define vtkReferenceShadowPass_h
 
 #include "vtkSoftShadowPass.h"
+#include "vtkSoftShadowsTechniquesModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 
-class VTKSOFTSHADOWSRENDERING_EXPORT vtkReferenceShadowPass : public vtkSoftShadowPass
+class VTKSOFTSHADOWSTECHNIQUES_EXPORT vtkReferenceShadowPass : public vtkSoftShadowPass
 {
 public:
   static vtkReferenceShadowPass* New();

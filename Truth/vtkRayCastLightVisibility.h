@@ -40,11 +40,11 @@
 
 #include "vtkImageAlgorithm.h"
 #include "vtkSmartPointer.h"               // for vtkSmartPointer
-#include "vtkSoftShadowsRenderingModule.h" // for export macro
+#include "vtkSoftShadowsTruthModule.h" // for export macro
 
 class vtkRenderer;
 
-class VTKSOFTSHADOWSRENDERING_EXPORT vtkRayCastLightVisibility : public vtkImageAlgorithm
+class VTKSOFTSHADOWSTRUTH_EXPORT vtkRayCastLightVisibility : public vtkImageAlgorithm
 {
 public:
   static vtkRayCastLightVisibility* New();
