@@ -7,9 +7,9 @@
  *          and memory barriers, in raw OpenGL since VTK 9.1 has no compute
  *          shader type and no SSBO buffer type.
  *
- * Part of the framework. Ask IsSupported() (or, from a technique,
- * vtkSoftShadowPass::CheckCompute(), which reports a clear error once)
- * before building anything. Program::Use() tells VTK's shader cache that
+ * Part of the framework. Ask IsSupported() before building anything; a
+ * technique whose traits ask for Compute has it asked by vtkSoftShadowPass,
+ * which reports a clear error once. Program::Use() tells VTK's shader cache that
  * its own program is no longer bound, so VTK's state stays in sync.
  */
 

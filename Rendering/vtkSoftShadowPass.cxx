@@ -177,7 +177,7 @@ public:
   void PreReplace(vtkShadowShaderSources& sources) override
   {
     using namespace vtkShadowMapperCode;
-    if (this->Pass->UsesScreenSpace())
+    if (this->Pass->FrameTraits.ScreenSpace)
     {
       // textureGather (vtkShadowScreenVisibility) in the mappers' GLSL 1.50.
       sources.AddFragmentExtension("GL_ARB_texture_gather");
@@ -191,7 +191,7 @@ public:
       // lookup, vtkOmniPoissonAll, needs it).
       sources.AddFragmentExtension("GL_ARB_gpu_shader5");
     }
-    for (const std::string& extension : this->Pass->GetReceiverExtensions())
+    for (const std::string& extension : this->Pass->FrameTraits.ReceiverExtensions)
     {
       sources.AddFragmentExtension(extension);
     }
@@ -230,11 +230,11 @@ void vtkSoftShadowPass::vtkReceiverStage::PostReplace(vtkShadowShaderSources& so
   // the reserve for the next frames.
   const int own = lit ? sources.CountTextures() : 0;
   pass->ReceiverOwnTextures = std::max(pass->ReceiverOwnTextures, own);
-  int room = pass->TextureUnits - own - pass->GetReceiverTexturesPerFrame();
+  int room = pass->TextureUnits - own - pass->FrameTraits.ReceiverTexturesPerFrame;
   size_t count = 0;
-  while (count < lights.size() && pass->ReceiverTextures(lights[count].Point) <= room)
+  while (count < lights.size() && pass->ReceiverTextures() <= room)
   {
-    room -= pass->ReceiverTextures(lights[count].Point);
+    room -= pass->ReceiverTextures();
     ++count;
   }
   if (lit && count < lights.size())
@@ -255,13 +255,13 @@ void vtkSoftShadowPass::vtkReceiverStage::PostReplace(vtkShadowShaderSources& so
     dec << "#define VTK_SHADOW_LIGHTS " << count << "\n"
         << "#define VTK_SHADOW_MAPS " << count - cubes << "\n"
         << "#define VTK_SHADOW_CUBES " << cubes << "\n";
-    if (pass->UsesScreenSpace())
+    if (pass->FrameTraits.ScreenSpace)
     {
       dec << "#define VTK_SHADOW_SCREEN_SPACE\n";
-      if (pass->GuidesScreenSpace())
+      if (pass->FrameTraits.GuidedScreenSpace)
       {
         dec << "#define VTK_SHADOW_SCREEN_GUIDED\n";
-        if (pass->RefinesScreenSpace())
+        if (pass->FrameTraits.RefinedScreenSpace)
         {
           dec << "#define VTK_SHADOW_SCREEN_REFINE\n";
         }
@@ -282,7 +282,7 @@ void vtkSoftShadowPass::vtkReceiverStage::PostReplace(vtkShadowShaderSources& so
       sources.Vertex, vtkShadowMapperCode::ShadowImpl, shading.VertexImplementation, false);
 
     impl << SurfaceCode(fragmentShader);
-    if (pass->UsesScreenSpace())
+    if (pass->FrameTraits.ScreenSpace)
     {
       impl << "  vtkShadowScreenSetup(vtkShadowPositionWC);\n";
     }
@@ -369,7 +369,7 @@ void vtkSoftShadowPass::vtkReceiverStage::SetUniforms(vtkShaderProgram* program,
       program->SetUniformi(
         Indexed("vtkShadowCube", light.MapIndex).c_str(), light.CubeMap->GetTextureUnit());
       vtkShadowMapManager::SetCubeUniforms(program, "vtkShadow",
-        "[" + std::to_string(light.MapIndex) + "]", light.Faces, pass->PackedCubeMaps);
+        "[" + std::to_string(light.MapIndex) + "]", light.Faces, pass->DrawsPackedCubeMaps());
       continue;
     }
     vtkShadowMapManager::SetFrustumUniforms(
@@ -380,7 +380,7 @@ void vtkSoftShadowPass::vtkReceiverStage::SetUniforms(vtkShaderProgram* program,
         Indexed("vtkShadowMap", light.MapIndex).c_str(), light.DepthMap->GetTextureUnit());
     }
   }
-  if (pass->UsesScreenSpace())
+  if (pass->FrameTraits.ScreenSpace)
   {
     pass->Screen->SetUniforms(program, static_cast<int>(lights.size()));
   }
@@ -478,21 +478,29 @@ int vtkSoftShadowPass::GetNumberOfUnshadowedLights() const
 //------------------------------------------------------------------------------
 int vtkSoftShadowPass::GetMaximumNumberOfShadowedLights(bool pointLights) const
 {
-  return std::max(this->ShadowTextureUnits(), 0) / this->ReceiverTextures(pointLights);
+  (void)pointLights; // a point light takes the same units as any light
+  return std::max(this->ShadowTextureUnits(), 0) / this->ReceiverTextures();
 }
 
 //------------------------------------------------------------------------------
 int vtkSoftShadowPass::ShadowTextureUnits() const
 {
   return this->TextureUnits - std::max(this->ReservedTextureUnits, this->ReceiverOwnTextures) -
-    this->GetReceiverTexturesPerFrame();
+    this->FrameTraits.ReceiverTexturesPerFrame;
 }
 
 //------------------------------------------------------------------------------
-int vtkSoftShadowPass::ReceiverTextures(bool pointLight) const
+int vtkSoftShadowPass::ReceiverTextures() const
 {
   // The light's map (or cube map), its screen-space texture, the technique's.
-  return 1 + (this->UsesScreenSpace() ? 1 : 0) + this->GetReceiverTexturesPerLight(pointLight);
+  const Traits& traits = this->FrameTraits;
+  return 1 + (traits.ScreenSpace ? 1 : 0) + traits.ReceiverTexturesPerLight;
+}
+
+//------------------------------------------------------------------------------
+bool vtkSoftShadowPass::DrawsPackedCubeMaps() const
+{
+  return this->PackedCubeMaps && !this->FrameTraits.FloatCubeMaps;
 }
 
 //------------------------------------------------------------------------------
@@ -517,22 +525,23 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
 
   // 1. Decide: which lights cast shadows, and their frusta; what casts.
   // As many lights as the receivers' texture units have room for.
+  this->FrameTraits = this->GetTraits();
+  const Traits& traits = this->FrameTraits;
   GLint fragmentUnits = 0, combinedUnits = 0;
   glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &fragmentUnits);
   glGetIntegerv(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, &combinedUnits);
   this->TextureUnits = std::min(fragmentUnits, combinedUnits);
   vtkShadowMapManager::Budget budget;
-  budget.PointLights = this->SupportsPointLights();
+  budget.PointLights = traits.PointLights;
   budget.TextureUnits = std::max(this->ShadowTextureUnits(), 0);
   if (this->Parallel->IsParallel())
   {
     // Every process must shadow the same lights: their maps are reduced together.
     budget.TextureUnits = this->Parallel->CombineMinimum(budget.TextureUnits);
   }
-  budget.Units = [this](const vtkShadowMapManager::Light& light)
-  { return this->ReceiverTextures(light.Point); };
+  budget.Units = [this](const vtkShadowMapManager::Light&) { return this->ReceiverTextures(); };
   this->Maps->Update(renderer, budget, this->Parallel.get());
-  this->Casters->SetBuildGlyphInstances(this->TakesCasterGeometry());
+  this->Casters->SetBuildGlyphInstances(traits.CasterGeometry);
   this->Casters->Update(renderer);
   auto& shadowed = this->Maps->GetLights();
   const int points = this->Maps->GetNumberOfSkippedPointLights();
@@ -543,7 +552,7 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
                   << " does not shadow point lights yet; they are drawn without shadows.");
     this->PointLightReported = true;
   }
-  const char* uncombined = this->GetUncombinedLightSpaceData();
+  const char* uncombined = traits.UncombinedLightSpaceData;
   if (uncombined && this->Parallel->IsParallel() && !this->UncombinedReported)
   {
     vtkErrorMacro(<< this->GetClassName() << " does not combine its " << uncombined
@@ -562,9 +571,8 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
                       << " lights are drawn without shadows: " << this->GetClassName()
                       << "'s receivers have " << budget.TextureUnits
                       << " texture units for shadows here and a light takes "
-                      << this->ReceiverTextures(false) << " (a point light "
-                      << this->ReceiverTextures(true)
-                      << "); the brightest, then those nearest the focal point, are shadowed.");
+                      << this->ReceiverTextures()
+                      << "; the brightest, then those nearest the focal point, are shadowed.");
     }
     this->ReportedUnshadowed = unshadowed;
   }
@@ -573,11 +581,13 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   bool drawn = !shadowed.empty();
   if (drawn)
   {
-    drawn = this->RenderShadowMaps(s);
+    drawn =
+      this->CheckRequirements(vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow())) &&
+      this->RenderShadowMaps(s);
   }
-  if (drawn && this->UsesScreenSpace())
+  if (drawn && traits.ScreenSpace)
   {
-    this->Screen->SetResolutionDivisor(this->GetScreenResolutionDivisor());
+    this->Screen->SetResolutionDivisor(traits.ScreenResolutionDivisor);
     drawn = this->Screen->Update(s) && this->RenderScreenSpace(s) &&
       this->Screen->Pack(static_cast<int>(shadowed.size()));
   }
@@ -587,7 +597,7 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   }
 
   // 4. Draw the scene with the shadow term in every receiver's shader.
-  this->RenderReceivers(s, drawn && this->UsesScreenSpace());
+  this->RenderReceivers(s, drawn && traits.ScreenSpace);
   vtkOpenGLCheckErrorMacro("failed after Render");
 }
 
@@ -744,7 +754,7 @@ bool vtkSoftShadowPass::RenderDistanceCube(const vtkRenderState* s,
   setup.Faces = &faces;
   setup.Colours = { cube };
   // Nothing drawn is infinitely far (packed: the largest value): lit.
-  const float far = this->PackedCubeMaps ? 1.0f : VTK_FLOAT_MAX;
+  const float far = this->DrawsPackedCubeMaps() ? 1.0f : VTK_FLOAT_MAX;
   std::fill(setup.ClearColour, setup.ClearColour + 4, far);
   this->DistanceStage->SetPacked(this->PackedCubeMaps);
   setup.Stage = this->DistanceStage.get();
@@ -781,7 +791,7 @@ bool vtkSoftShadowPass::RenderLightDepthMaps(const vtkRenderState* s, bool linea
   {
     if (light.Point)
     {
-      this->Maps->AllocateCubeMap(context, light, this->MapSize, this->PackedCubeMaps);
+      this->Maps->AllocateCubeMap(context, light, this->MapSize, this->DrawsPackedCubeMaps());
       if (!this->RenderDistanceCube(s, light.Faces, light.CubeMap))
       {
         return false;
@@ -838,20 +848,38 @@ void vtkSoftShadowPass::RenderDepthPrePass(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-bool vtkSoftShadowPass::CheckCompute(vtkOpenGLRenderWindow* context)
+bool vtkSoftShadowPass::CheckRequirements(vtkOpenGLRenderWindow* context)
 {
+  const Traits& traits = this->FrameTraits;
   std::string missing;
-  if (vtkShadowCompute::IsSupported(context, &missing))
+  if (traits.Compute && !vtkShadowCompute::IsSupported(context, &missing))
   {
-    return true;
+    if (!this->ComputeReported)
+    {
+      vtkErrorMacro(<< this->GetClassName() << " needs OpenGL 4.3 compute, and this context lacks "
+                    << missing << ": drawing without its shadows.");
+      this->ComputeReported = true;
+    }
+    return false;
   }
-  if (!this->ComputeReported)
+  if (traits.Samplers && !this->Screen->SupportsSamplers())
   {
-    vtkErrorMacro(<< this->GetClassName() << " needs OpenGL 4.3 compute, and this context lacks "
-                  << missing << ": drawing without its shadows.");
-    this->ComputeReported = true;
+    if (!this->SamplersReported)
+    {
+      vtkErrorMacro(<< this->GetClassName()
+                    << " needs OpenGL 3.3 or ARB_sampler_objects to read shadow-map depths: "
+                       "drawing without its shadows.");
+      this->SamplersReported = true;
+    }
+    return false;
   }
-  return false;
+  if (traits.FloatCubeMaps && this->PackedCubeMaps && !this->PackedReported)
+  {
+    vtkWarningMacro(<< "PackedCubeMaps: " << this->GetClassName()
+                    << " reads float cube maps; drawing those.");
+    this->PackedReported = true;
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -879,11 +907,11 @@ std::string vtkSoftShadowPass::GetVisibilityExpression(int slot)
     ? std::string(this->IsFirstPointLight(slot) ? "vtkShadowCubeHardAll" : "vtkShadowCubeHardOf") +
       "(vtkShadowPositionWC, vtkShadowNormalWC, " + m + ")"
     : this->GetHardLookupExpression(slot, "vtkShadowMap[" + m + "]");
-  if (this->UsesScreenSpace())
+  if (this->FrameTraits.ScreenSpace)
   {
     const std::string screen =
       "vtkShadowScreenVisibility(vtkShadowScreen[" + i + "], " + hard + ")";
-    if (!this->GuidesScreenSpace() || !this->RefinesScreenSpace())
+    if (!this->FrameTraits.GuidedScreenSpace || !this->FrameTraits.RefinedScreenSpace)
     {
       return screen;
     }

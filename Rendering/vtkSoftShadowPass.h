@@ -28,7 +28,7 @@
  * A light casts shadows when it is switched on and is not a headlight: spot
  * lights (cone angle < 90) and directional lights through 2D maps, point
  * lights (positional, cone angle >= 90) through cube maps of squared
- * distances, for the techniques that support them (SupportsPointLights());
+ * distances, for the techniques that support them (Traits::PointLights);
  * the others report point lights once with an error and draw them unshadowed.
  *
  * The light's size comes from SetRadius()/GetRadius() (vtkShadowLightSize),
@@ -40,7 +40,7 @@
  * (GL_MAX_TEXTURE_IMAGE_UNITS, and GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS over
  * all its stages), and every shadowed light takes some: its map, its
  * screen-space texture for screen-space techniques, and the technique's own
- * (GetReceiverTexturesPerLight()). When the lights would need more than the
+ * (Traits::ReceiverTexturesPerLight). When the lights would need more than the
  * context has, less ReservedTextureUnits for VTK's own textures, the
  * brightest lights, then those nearest the camera's focal point, are
  * shadowed (vtkShadowMapManager::Update()), the others light the scene
@@ -228,7 +228,7 @@ public:
    * one process shadows receivers on every other. Every process must then
    * render every frame, with the same lights and technique. Techniques whose
    * own light-space data is not combined yet say so once
-   * (GetUncombinedLightSpaceData()). Default none: each process shadows
+   * (Traits::UncombinedLightSpaceData). Default none: each process shadows
    * with what it draws.
    */
   void SetController(vtkMultiProcessController* controller);
@@ -300,46 +300,71 @@ protected:
    */
   bool Draw(const vtkRenderState* s, const vtkShadowDrawSetup& setup);
 
-  /**
-   * Whether the context has OpenGL 4.3 compute (vtkShadowCompute); if not,
-   * reports a clear error once and returns false: the technique then draws
-   * without its shadows.
-   */
-  bool CheckCompute(vtkOpenGLRenderWindow* context);
+  /// What the framework needs to know of a technique, asked once a frame
+  /// (GetTraits()): what it shadows and draws, and what it needs of the
+  /// context and of the receivers' shaders.
+  struct Traits
+  {
+    /// Shadows point lights (cube maps); else they are reported once with an
+    /// error and light the scene unshadowed.
+    bool PointLights = false;
+    /// Takes the casters' polydata (its own topology, edges or triangles):
+    /// the registry then builds glyph instances' meshes.
+    bool CasterGeometry = false;
+    /// Needs OpenGL 4.3 compute (vtkShadowCompute); without it one clear
+    /// error, and frames are drawn without the technique's shadows.
+    bool Compute = false;
+    /// Needs sampler objects (OpenGL 3.3 or ARB_sampler_objects) to read
+    /// depths of the light's maps raw; the same when missing.
+    bool Samplers = false;
+    /// Reads point lights' cube maps as floats: with PackedCubeMaps on, one
+    /// warning, and the maps are drawn as floats all the same.
+    bool FloatCubeMaps = false;
+    /// Step 3: RenderScreenSpace() writes, for each light, a visibility
+    /// texture (vtkShadowScreenBuffers::BeginVisibility()) or the receivers'
+    /// codes directly (vtkShadowScreenBuffers::GetPacked()) in this->Screen.
+    bool ScreenSpace = false;
+    /// The screen-space texels carry flags (their own hard shadow's side,
+    /// and the axes along which their penumbra is resolved:
+    /// vtkShadowPackTexel()) that guide the receivers' upsampling by their
+    /// own full-resolution hard shadow (vtkShadowScreenVisibility()).
+    bool GuidedScreenSpace = false;
+    /// Guided receivers also refine, in light space, what the screen-space
+    /// texels could not resolve (vtkShadowScreenRefine(); the texels carry
+    /// their penumbra's width).
+    bool RefinedScreenSpace = false;
+    /// Screen-space passes run on buffers this many times smaller than the
+    /// viewport on each axis; receivers upsample the result, following
+    /// surfaces, and keep their own full-resolution hard shadow where the
+    /// screen-space pass left a pixel alone.
+    int ScreenResolutionDivisor = 1;
+    /// Texture units the receivers read for one shadowed light besides the
+    /// framework's own (the light's map, and with ScreenSpace its
+    /// screen-space texture), and per frame besides those of any light:
+    /// what limits how many lights can be shadowed.
+    int ReceiverTexturesPerLight = 0;
+    int ReceiverTexturesPerFrame = 0;
+    /// GLSL extensions the receiver code needs in the mappers' GLSL 1.50
+    /// fragment shaders (e.g. "GL_ARB_texture_gather").
+    std::vector<std::string> ReceiverExtensions;
+    /// What of the technique's own light-space data (beyond the framework's
+    /// depth and distance maps, which are combined) a parallel render does
+    /// not combine across processes yet, e.g. "silhouette distance maps";
+    /// null when everything is combined.
+    const char* UncombinedLightSpaceData = nullptr;
+  };
 
   /**
-   * What of the technique's own light-space data (beyond the framework's
-   * depth and distance maps, which are combined) a parallel render does not
-   * combine across processes yet, e.g. "silhouette distance maps"; null when
-   * everything is combined (the default).
+   * The technique's traits with its current settings. Default: all off,
+   * which is what a technique drawing only 2D light-space maps is.
    */
-  virtual const char* GetUncombinedLightSpaceData() const { return nullptr; }
+  virtual Traits GetTraits() const { return {}; }
 
   /**
-   * Step 3, optional: screen-space passes. Techniques that override it return
-   * true from UsesScreenSpace() and write, for each light, a visibility
-   * texture (vtkShadowScreenBuffers::BeginVisibility()) or the receivers'
-   * codes directly (vtkShadowScreenBuffers::GetPacked()) in this->Screen.
-   * Default: nothing.
+   * Step 3, optional: screen-space passes, for techniques whose traits say
+   * ScreenSpace. Default: nothing.
    */
   virtual bool RenderScreenSpace(const vtkRenderState*) { return true; }
-  virtual bool UsesScreenSpace() const { return false; }
-
-  /**
-   * True when the technique's valid texels carry flags (their own hard
-   * shadow's side, and the axes along which their penumbra is resolved:
-   * vtkShadowPackTexel()) that guide the receivers' upsampling by their own
-   * full-resolution hard shadow (vtkShadowScreenVisibility()). Default false.
-   */
-  virtual bool GuidesScreenSpace() const { return false; }
-
-  /**
-   * True when guided receivers also refine, in light space, what the
-   * screen-space texels could not resolve (vtkShadowScreenRefine(); the
-   * texels carry their penumbra's width). Default false.
-   */
-  virtual bool RefinesScreenSpace() const { return false; }
-
   /**
    * Helper for RenderScreenSpace(): draw the camera depth of the opaque props
    * into this->Screen. With `targets` (textures of this->Screen's size), each
@@ -365,50 +390,15 @@ protected:
   ///@}
 
   /**
-   * Screen-space passes run on buffers this many times smaller than the
-   * viewport on each axis; receivers upsample the result, following
-   * surfaces, and keep their own full-resolution hard shadow where the
-   * screen-space pass left a pixel alone. Default 1.
-   */
-  virtual int GetScreenResolutionDivisor() const { return 1; }
-
-  /**
-   * Whether the technique shadows point lights (cube maps). Default false.
-   */
-  virtual bool SupportsPointLights() const { return false; }
-
-  /// Whether the technique takes the casters' polydata (its own topology,
-  /// edges or triangles): then the registry builds glyph instances' meshes.
-  virtual bool TakesCasterGeometry() const { return false; }
-
-  ///@{
-  /**
-   * Texture units the technique's receivers read for one shadowed light (a
-   * point light when `pointLight`) besides the framework's own (the light's
-   * map, and with UsesScreenSpace() its screen-space texture), and per frame
-   * besides those of any light: what limits how many lights can be shadowed.
-   * Default 0.
-   */
-  virtual int GetReceiverTexturesPerLight(bool vtkNotUsed(pointLight)) const { return 0; }
-  virtual int GetReceiverTexturesPerFrame() const { return 0; }
-  ///@}
-
-  /**
    * GLSL declarations the technique adds to receivers' fragment shaders,
    * after the framework's own (vtkSoftShadowReceiverFS.glsl). Default: none.
    */
   virtual std::string GetVisibilityDeclarations() { return std::string(); }
 
   /**
-   * GLSL extensions the technique's receiver code needs in the mappers'
-   * GLSL 1.50 fragment shaders (e.g. "GL_ARB_texture_gather"). Default: none.
-   */
-  virtual std::vector<std::string> GetReceiverExtensions() const { return {}; }
-
-  /**
    * GLSL expression for the visibility (1 lit, 0 umbra) of shadowed light
    * `slot` at `vtkShadowPositionWC`. Default: the framework's hard lookup in
-   * the light's depth map with GetPCFRadius(), or, when UsesScreenSpace(),
+   * the light's depth map with GetPCFRadius(), or, for ScreenSpace traits,
    * the light's screen-space visibility texture, upsampled, where it holds a
    * value for the fragment's surface, and that hard lookup elsewhere.
    */
@@ -493,6 +483,10 @@ protected:
    */
   virtual int GetPCFRadius() const { return 0; }
 
+  /// PackedCubeMaps as this frame's cube maps are drawn: off when the
+  /// technique reads floats (Traits::FloatCubeMaps).
+  bool DrawsPackedCubeMaps() const;
+
   /**
    * Whether the light depth maps are filtered bilinearly (set by the
    * technique through RenderLightDepthMaps()); PCF then samples texel corners.
@@ -532,18 +526,24 @@ private:
   std::unique_ptr<vtkReceiverStage> ReceiverStage;
   std::vector<ReceiverTexture>
     FrameReceiverTextures; ///< GetReceiverTextures() while receivers draw
+  Traits FrameTraits;      ///< GetTraits(), asked at the start of this frame
   bool LinearMaps = false;
   bool PointLightReported = false;
   bool UncombinedReported = false;
   std::unique_ptr<vtkShadowParallelMaps> Parallel;
   bool ComputeReported = false;
+  bool SamplersReported = false;
+  bool PackedReported = false;
   int ReportedUnshadowed = 0;  ///< the count the last warning gave
   int TextureUnits = 0;        ///< a receiver's units, in the last frame's context
   int ReceiverOwnTextures = 0; ///< most textures a receiver's shader declared of its own
-  /// TextureUnits less the reserve and GetReceiverTexturesPerFrame().
+  /// TextureUnits less the reserve and the traits' ReceiverTexturesPerFrame.
   int ShadowTextureUnits() const;
-  /// Units one shadowed light (a point light when `pointLight`) takes.
-  int ReceiverTextures(bool pointLight) const;
+  /// Units one shadowed light takes.
+  int ReceiverTextures() const;
+  /// Whether the context has what the traits need; reports each lack once.
+  bool CheckRequirements(vtkOpenGLRenderWindow* context);
+
   void RenderDepthPrePass(const vtkRenderState* s);
   void ChooseTranslucency(vtkRenderer* renderer);
   vtkSmartPointer<vtkRenderStepsPass> DefaultSteps;

@@ -14,9 +14,9 @@
 #include "vtkShaderProgram.h"
 #include "vtkShadowCasterRegistry.h"
 #include "vtkShadowStage.h"
+#include "vtkShadowVTKVersion.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
-#include "vtkShadowVTKVersion.h"
 
 #include "vtkAliasFreeBendFS.h"
 #include "vtkAliasFreeBendVS.h"

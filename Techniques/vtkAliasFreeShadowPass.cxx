@@ -330,6 +330,24 @@ void vtkAliasFreeShadowPass::SetLightScale(double x, double y, double z)
 }
 
 //------------------------------------------------------------------------------
+vtkSoftShadowPass::Traits vtkAliasFreeShadowPass::GetTraits() const
+{
+  Traits traits;
+  traits.PointLights = true;
+  traits.CasterGeometry = true; // the casters' triangles
+  traits.Compute = true;
+  traits.ScreenSpace = true; // each pixel's visibility
+  // The map of what casts beyond faces (lines, points): kept for every
+  // light, so that the lights shadowed do not depend on the scene's actors.
+  traits.ReceiverTexturesPerLight = 1;
+  // Bent normals' two texture buffers, read by the receivers' vertex shaders.
+  traits.ReceiverTexturesPerFrame = this->BentNormals ? 2 : 0;
+  traits.UncombinedLightSpaceData =
+    "per-pixel light-space lists (each process tests only its own triangles)";
+  return traits;
+}
+
+//------------------------------------------------------------------------------
 bool vtkAliasFreeShadowPass::RenderShadowMaps(const vtkRenderState* s)
 {
   // The light's own depth map serves only what has no view sample:
@@ -405,7 +423,7 @@ bool vtkAliasFreeShadowPass::RenderScreenSpace(const vtkRenderState* s)
   auto* context = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
   this->NumberOfViewSamples = 0;
   this->LongestList = 0;
-  if (!this->CheckCompute(context) || this->Internal->Failed)
+  if (this->Internal->Failed)
   {
     return false;
   }

@@ -211,22 +211,11 @@ protected:
 
   bool RenderShadowMaps(const vtkRenderState* s) override;
   bool RenderScreenSpace(const vtkRenderState* s) override;
-  bool UsesScreenSpace() const override { return true; }
-  const char* GetUncombinedLightSpaceData() const override
-  {
-    return "per-pixel light-space lists (each process tests only its own triangles)";
-  }
+  Traits GetTraits() const override;
   std::string GetCameraPassImplementation() override;
-  bool SupportsPointLights() const override { return true; }
-  bool TakesCasterGeometry() const override { return true; }
   ReceiverShading GetReceiverShading(const vtkShadowShaderSources& sources) override;
   void SetReceiverShadingUniforms(vtkShaderProgram* program, vtkProp* prop) override;
   void ReceiversDrawn() override;
-  /// Bent normals' two texture buffers, read by the receivers' vertex shaders.
-  int GetReceiverTexturesPerFrame() const override { return this->BentNormals ? 2 : 0; }
-  /// The map of what casts beyond faces (lines, points): kept for every
-  /// light, so that the lights shadowed do not depend on the scene's actors.
-  int GetReceiverTexturesPerLight(bool) const override { return 1; }
   std::vector<ReceiverTexture> GetReceiverTextures() override;
   std::string GetVisibilityExpression(int slot) override;
 

@@ -13,8 +13,8 @@
 #include "vtkShadowMapManager.h"
 #include "vtkShadowSampling.h"
 #include "vtkShadowScreenBuffers.h"
-#include "vtkTextureObject.h"
 #include "vtkShadowVTKVersion.h"
+#include "vtkTextureObject.h"
 
 #include "vtkContactCommonFS.h"
 #include "vtkContactDistanceFS.h"
@@ -151,6 +151,19 @@ int vtkContactHardeningShadowPass::KernelSize(int pass) const
 }
 
 //------------------------------------------------------------------------------
+vtkSoftShadowPass::Traits vtkContactHardeningShadowPass::GetTraits() const
+{
+  Traits traits;
+  traits.PointLights = true;
+  traits.Samplers = true; // the distance map reads the light's depths raw
+  traits.ScreenSpace = true;
+  traits.GuidedScreenSpace = true;
+  traits.RefinedScreenSpace = this->RefineUnresolved;
+  traits.ScreenResolutionDivisor = this->ResolutionDivisor;
+  return traits;
+}
+
+//------------------------------------------------------------------------------
 bool vtkContactHardeningShadowPass::RenderShadowMaps(const vtkRenderState* s)
 {
   // Pass 1. Filtered bilinearly for the receivers' own hard shadow (where
@@ -167,13 +180,6 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
   vtkInternals& in = *this->Internals;
   if (in.Unsupported)
   {
-    return false;
-  }
-  if (!this->Screen->SupportsSamplers())
-  {
-    vtkErrorMacro("Contact-hardening shadows need OpenGL 3.3 or ARB_sampler_objects to read "
-                  "shadow-map depths; drawing without shadows.");
-    in.Unsupported = true;
     return false;
   }
 

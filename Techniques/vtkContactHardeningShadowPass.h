@@ -224,11 +224,7 @@ protected:
 
   bool RenderShadowMaps(const vtkRenderState* s) override;
   bool RenderScreenSpace(const vtkRenderState* s) override;
-  bool UsesScreenSpace() const override { return true; }
-  bool GuidesScreenSpace() const override { return true; }
-  bool RefinesScreenSpace() const override { return this->RefineUnresolved; }
-  bool SupportsPointLights() const override { return true; }
-  int GetScreenResolutionDivisor() const override { return this->ResolutionDivisor; }
+  Traits GetTraits() const override;
   std::string GetCameraPassDeclarations() override;
   std::string GetCameraPassImplementation() override;
   void SetCameraPassUniforms(vtkShaderProgram* program) override;

@@ -10,6 +10,14 @@ vtkHardShadowPass::vtkHardShadowPass() = default;
 vtkHardShadowPass::~vtkHardShadowPass() = default;
 
 //------------------------------------------------------------------------------
+vtkSoftShadowPass::Traits vtkHardShadowPass::GetTraits() const
+{
+  Traits traits;
+  traits.PointLights = true;
+  return traits;
+}
+
+//------------------------------------------------------------------------------
 bool vtkHardShadowPass::RenderShadowMaps(const vtkRenderState* s)
 {
   return this->RenderLightDepthMaps(s, this->HardwareFiltering);

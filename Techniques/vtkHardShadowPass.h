@@ -56,7 +56,7 @@ protected:
 
   bool RenderShadowMaps(const vtkRenderState* s) override;
   int GetPCFRadius() const override { return this->PCFRadius; }
-  bool SupportsPointLights() const override { return true; }
+  Traits GetTraits() const override;
 
   int PCFRadius = 0;
   bool HardwareFiltering = true;

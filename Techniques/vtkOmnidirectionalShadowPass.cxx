@@ -25,6 +25,14 @@ vtkOmnidirectionalShadowPass::vtkOmnidirectionalShadowPass()
 vtkOmnidirectionalShadowPass::~vtkOmnidirectionalShadowPass() = default;
 
 //------------------------------------------------------------------------------
+vtkSoftShadowPass::Traits vtkOmnidirectionalShadowPass::GetTraits() const
+{
+  Traits traits;
+  traits.PointLights = true;
+  return traits;
+}
+
+//------------------------------------------------------------------------------
 bool vtkOmnidirectionalShadowPass::RenderShadowMaps(const vtkRenderState* s)
 {
   // Bilinear 2D maps for spot and directional lights; cube maps are nearest.

@@ -76,7 +76,7 @@ protected:
   ~vtkOmnidirectionalShadowPass() override;
 
   bool RenderShadowMaps(const vtkRenderState* s) override;
-  bool SupportsPointLights() const override { return true; }
+  Traits GetTraits() const override;
   int GetPCFRadius() const override;
   std::string GetVisibilityDeclarations() override;
   std::string GetVisibilityExpression(int slot) override;

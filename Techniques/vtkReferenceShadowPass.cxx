@@ -13,8 +13,8 @@
 #include "vtkShadowMapManager.h"
 #include "vtkShadowSampling.h"
 #include "vtkShadowScreenBuffers.h"
-#include "vtkTextureObject.h"
 #include "vtkShadowVTKVersion.h"
+#include "vtkTextureObject.h"
 
 #include "vtkReferenceAccumulateFS.h"
 
@@ -54,6 +54,15 @@ vtkReferenceShadowPass::vtkReferenceShadowPass()
 }
 
 vtkReferenceShadowPass::~vtkReferenceShadowPass() = default;
+
+//------------------------------------------------------------------------------
+vtkSoftShadowPass::Traits vtkReferenceShadowPass::GetTraits() const
+{
+  Traits traits;
+  traits.PointLights = true;
+  traits.ScreenSpace = true; // the samples' visibility, added up per pixel
+  return traits;
+}
 
 //------------------------------------------------------------------------------
 bool vtkReferenceShadowPass::RenderShadowMaps(const vtkRenderState* s)

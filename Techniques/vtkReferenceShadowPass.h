@@ -87,8 +87,7 @@ protected:
 
   bool RenderShadowMaps(const vtkRenderState* s) override;
   bool RenderScreenSpace(const vtkRenderState* s) override;
-  bool UsesScreenSpace() const override { return true; }
-  bool SupportsPointLights() const override { return true; }
+  Traits GetTraits() const override;
   std::string GetCameraPassImplementation() override;
 
   int NumberOfSamples = 256;

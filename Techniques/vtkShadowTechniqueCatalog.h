@@ -20,7 +20,7 @@
 
 #include "vtkObject.h"
 #include "vtkSoftShadowsTechniquesModule.h" // for export macro
-#include "vtkWrappingHints.h"              // for VTK_NEWINSTANCE
+#include "vtkWrappingHints.h"               // for VTK_NEWINSTANCE
 
 class vtkSoftShadowPass;
 

@@ -132,8 +132,6 @@ struct vtkSilhouetteShadowPass::Internals
       }
     }
   }
-  bool SamplersReported = false;
-  bool PackedReported = false;
 };
 
 vtkStandardNewMacro(vtkSilhouetteShadowPass);
@@ -181,30 +179,27 @@ std::vector<float> BuildLookup(
 }
 
 //------------------------------------------------------------------------------
+vtkSoftShadowPass::Traits vtkSilhouetteShadowPass::GetTraits() const
+{
+  Traits traits;
+  traits.PointLights = true;
+  traits.CasterGeometry = true; // topology aware meshes
+  traits.Samplers = true;       // pass 2 reads the depth map raw
+  // Receivers gather four texels of a point light's cube of squared
+  // distances, and of the depth map's comparisons (textureGather on a
+  // shadow sampler).
+  traits.FloatCubeMaps = true;
+  traits.ReceiverExtensions = { "GL_ARB_texture_gather", "GL_ARB_gpu_shader5" };
+  traits.ReceiverTexturesPerLight = 2; // the distance map and its lookup table
+  traits.UncombinedLightSpaceData = "silhouette distance maps";
+  return traits;
+}
+
+//------------------------------------------------------------------------------
 bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
 {
   auto* context = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
-  if (!this->Screen->SupportsSamplers())
-  {
-    if (!this->Internal->SamplersReported)
-    {
-      vtkErrorMacro("Silhouette shadows need OpenGL 3.3 or ARB_sampler_objects to read shadow-map "
-                    "depths; drawing without shadows.");
-      this->Internal->SamplersReported = true;
-    }
-    return false;
-  }
-  // Pass 1: depth, as `hard` draws it. Receivers gather four texels of a
-  // point light's cube of squared distances: float ones.
-  if (this->PackedCubeMaps)
-  {
-    if (!this->Internal->PackedReported)
-    {
-      vtkWarningMacro("PackedCubeMaps: silhouette shadows read float cube maps; using those.");
-      this->Internal->PackedReported = true;
-    }
-    this->PackedCubeMaps = false;
-  }
+  // Pass 1: depth, as `hard` draws it.
   if (!this->RenderLightDepthMaps(s, false))
   {
     return false;

@@ -213,19 +213,11 @@ protected:
 
   bool RenderShadowMaps(const vtkRenderState* s) override;
   std::string GetVisibilityDeclarations() override;
-  bool SupportsPointLights() const override { return true; }
-  bool TakesCasterGeometry() const override { return true; }
-  std::vector<std::string> GetReceiverExtensions() const override
-  {
-    // The depth map's four comparisons: textureGather on a shadow sampler.
-    return { "GL_ARB_texture_gather", "GL_ARB_gpu_shader5" };
-  }
+  Traits GetTraits() const override;
   std::string GetVisibilityExpression(int slot) override;
   void SetVisibilityUniforms(vtkShaderProgram* program) override;
   std::vector<ReceiverTexture> GetReceiverTextures() override;
   /// Each light's signed distances and its lookup texture.
-  int GetReceiverTexturesPerLight(bool) const override { return 2; }
-  const char* GetUncombinedLightSpaceData() const override { return "silhouette distance maps"; }
 
   int Variant = Soft;
   double ExpectedWidth = 0.0;

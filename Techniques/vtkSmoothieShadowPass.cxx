@@ -385,7 +385,6 @@ struct vtkSmoothieShadowPass::Internals
   std::string GeometryShader = vtkSmoothieEdgesGS;
   std::string CubeFaceGeometryShader =
     vtkShadowGeometry::WithPrefix(vtkSmoothieEdgesGS, "#define SMOOTHIE_CUBE_FACE");
-  bool PackedReported = false;
   unsigned long Frame = 0; ///< frames drawn, for CasterEdges::TakePlacement()
 };
 
@@ -399,18 +398,24 @@ vtkSmoothieShadowPass::vtkSmoothieShadowPass()
 vtkSmoothieShadowPass::~vtkSmoothieShadowPass() = default;
 
 //------------------------------------------------------------------------------
+vtkSoftShadowPass::Traits vtkSmoothieShadowPass::GetTraits() const
+{
+  Traits traits;
+  traits.PointLights = true;
+  traits.CasterGeometry = true; // silhouette edges
+  // Receivers read four texels of two channels in three fetches
+  // (textureGather with a component), and float cube maps.
+  traits.FloatCubeMaps = true;
+  traits.ReceiverExtensions = { "GL_ARB_texture_gather", "GL_ARB_gpu_shader5" };
+  traits.ReceiverTexturesPerLight = 1; // the smoothie buffer
+  traits.UncombinedLightSpaceData = "smoothie depth and alpha buffers";
+  return traits;
+}
+
+//------------------------------------------------------------------------------
 bool vtkSmoothieShadowPass::RenderShadowMaps(const vtkRenderState* s)
 {
   auto* context = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
-  if (this->PackedCubeMaps)
-  {
-    if (!this->Internal->PackedReported)
-    {
-      vtkWarningMacro("PackedCubeMaps: smoothies read float cube maps; using those.");
-      this->Internal->PackedReported = true;
-    }
-    this->PackedCubeMaps = false;
-  }
   auto& lights = this->Maps->GetLights();
 
   // Each caster's silhouette edges for each light, found again only when

@@ -147,24 +147,13 @@ protected:
   ~vtkSmoothieShadowPass() override;
 
   bool RenderShadowMaps(const vtkRenderState* s) override;
-  bool SupportsPointLights() const override { return true; }
-  bool TakesCasterGeometry() const override { return true; }
+  Traits GetTraits() const override;
   std::string GetVisibilityDeclarations() override;
-  std::vector<std::string> GetReceiverExtensions() const override
-  {
-    // Four texels of two channels in three fetches: textureGather with a component.
-    return { "GL_ARB_texture_gather", "GL_ARB_gpu_shader5" };
-  }
   std::string GetVisibilityExpression(int slot) override;
   void SetVisibilityUniforms(vtkShaderProgram* program) override;
   std::vector<ReceiverTexture> GetReceiverTextures() override;
   /// Each light's smoothie buffer (spot and directional lights' linear
   /// depths take the place of the framework's map).
-  int GetReceiverTexturesPerLight(bool) const override { return 1; }
-  const char* GetUncombinedLightSpaceData() const override
-  {
-    return "smoothie depth and alpha buffers";
-  }
 
   double Thickness = 0.0;
   double PenumbraScale = 0.7;

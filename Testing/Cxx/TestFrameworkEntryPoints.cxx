@@ -253,12 +253,16 @@ protected:
     return true;
   }
 
+  // The framework checked compute first: the traits ask for it.
+  Traits GetTraits() const override
+  {
+    Traits traits;
+    traits.Compute = this->UseCompute;
+    return traits;
+  }
+
   bool RenderCompute(const vtkRenderState* s, vtkOpenGLRenderWindow* context)
   {
-    if (!this->CheckCompute(context))
-    {
-      return false;
-    }
     s->GetRenderer()->GetTiledSizeAndOrigin(
       &this->Size[0], &this->Size[1], &this->Origin[0], &this->Origin[1]);
     if (!this->ScreenVisibility)

@@ -39,7 +39,12 @@ protected:
   ~vtkShadowTexelGridPass() override;
 
   bool RenderShadowMaps(const vtkRenderState* s) override;
-  bool SupportsPointLights() const override { return true; }
+  Traits GetTraits() const override
+  {
+    Traits traits;
+    traits.PointLights = true;
+    return traits;
+  }
   std::string GetVisibilityDeclarations() override;
   std::string GetVisibilityExpression(int slot) override;
   void SetVisibilityUniforms(vtkShaderProgram* program) override;

@@ -91,7 +91,7 @@ __all__ = [
 _CATALOG = vtkShadowTechniqueCatalog
 
 # The techniques whose receivers read screen-space buffers of the viewport's
-# size (vtkSoftShadowPass::UsesScreenSpace(), protected in C++): they need the
+# size (vtkSoftShadowPass::Traits::ScreenSpace, protected in C++): they need the
 # scene drawn at the viewport's size and corner. The others (hard, omni,
 # silhouette, smoothies) look up light-space maps only. A technique in neither
 # list is treated as screen space, the cautious side.
