@@ -57,6 +57,10 @@ struct Parameter
   std::function<bool(vtkSoftShadowPass*)> Accepts;
   std::function<void(vtkSoftShadowPass*, const double*)> Set;
   std::function<void(vtkSoftShadowPass*, double*)> Get;
+  /// The class's own clamp (vtkSetClampMacro's Get<Name>MinValue() and
+  /// MaxValue()), read into Allowed when the table is made; unset when the
+  /// table gives Allowed.
+  std::function<Bounds(vtkSoftShadowPass*)> Clamp;
 };
 
 struct Variant
@@ -90,8 +94,29 @@ Parameter Bind(const char* key, int type, Bounds allowed, const char* meaning,
     [set](vtkSoftShadowPass* pass, const double* v)
     { (PassType::SafeDownCast(pass)->*set)(static_cast<Value>(v[0])); },
     [get](vtkSoftShadowPass* pass, double* v)
-    { v[0] = static_cast<double>((PassType::SafeDownCast(pass)->*get)()); } };
+    { v[0] = static_cast<double>((PassType::SafeDownCast(pass)->*get)()); },
+    nullptr };
 }
+
+/// A parameter whose class clamps it (vtkSetClampMacro): its bounds are the
+/// class's own. Getters by type: const or not, as each VTK release has them.
+template <typename PassType, typename Value, typename MinGetter, typename MaxGetter>
+Parameter BindClamped(const char* key, int type, const char* meaning, void (PassType::*set)(Value),
+  Value (PassType::*get)(), MinGetter minimum, MaxGetter maximum)
+{
+  Parameter parameter = Bind<PassType, Value>(key, type, Any(), meaning, set, get);
+  parameter.Clamp = [minimum, maximum](vtkSoftShadowPass* pass)
+  {
+    PassType* typed = PassType::SafeDownCast(pass);
+    return Bounds{ static_cast<double>((typed->*minimum)()),
+      static_cast<double>((typed->*maximum)()) };
+  };
+  return parameter;
+}
+
+/// The setter, getter and clamp of property Name of Class, for BindClamped().
+#define VTK_SHADOW_CLAMPED(Class, Name)                                                            \
+  &Class::Set##Name, &Class::Get##Name, &Class::Get##Name##MinValue, &Class::Get##Name##MaxValue
 
 template <typename PassType>
 Parameter BindVector3(const char* key, Bounds allowed, const char* meaning,
@@ -104,7 +129,8 @@ Parameter BindVector3(const char* key, Bounds allowed, const char* meaning,
     {
       const double* value = (PassType::SafeDownCast(pass)->*get)();
       std::copy(value, value + 3, v);
-    } };
+    },
+    nullptr };
 }
 
 constexpr int Boolean = vtkShadowTechniqueCatalog::Boolean;
@@ -120,13 +146,13 @@ std::vector<Parameter> WithCommonParameters(std::vector<Parameter> own)
   own.push_back(Bind<vtkSoftShadowPass, double>("constant_bias", Number, Any(),
     "constant depth offset while drawing shadow maps (glPolygonOffset units)",
     &vtkSoftShadowPass::SetConstantBias, &vtkSoftShadowPass::GetConstantBias));
-  own.push_back(Bind<vtkSoftShadowPass, double>("normal_bias", Number, Between(0.0, 16.0),
+  own.push_back(BindClamped<vtkSoftShadowPass, double>("normal_bias", Number,
     "how far in front of its surface a receiver point is looked up, along the light's ray, in "
     "shadow-map texels",
-    &vtkSoftShadowPass::SetNormalBias, &vtkSoftShadowPass::GetNormalBias));
-  own.push_back(Bind<vtkSoftShadowPass, double>("distance_bias", Number, Between(0.5, 1.0),
+    VTK_SHADOW_CLAMPED(vtkSoftShadowPass, NormalBias)));
+  own.push_back(BindClamped<vtkSoftShadowPass, double>("distance_bias", Number,
     "point lights: factor on squared distances before comparing with the cube map",
-    &vtkSoftShadowPass::SetDistanceBias, &vtkSoftShadowPass::GetDistanceBias));
+    VTK_SHADOW_CLAMPED(vtkSoftShadowPass, DistanceBias)));
   own.push_back(Bind<vtkSoftShadowPass, bool>("packed_cube_maps", Boolean, Any(),
     "point lights: RGBA8 cube maps packing squared distances, not float ones",
     &vtkSoftShadowPass::SetPackedCubeMaps, &vtkSoftShadowPass::GetPackedCubeMaps));
@@ -136,16 +162,42 @@ std::vector<Parameter> WithCommonParameters(std::vector<Parameter> own)
   return own;
 }
 
+std::vector<Technique> MakeTechniques();
+
+/// The table, with every clamped parameter's bounds read from a pass of its
+/// technique.
 const std::vector<Technique>& Techniques()
 {
-  static const std::vector<Technique> techniques = {
+  static const std::vector<Technique> techniques = []
+  {
+    std::vector<Technique> made = MakeTechniques();
+    for (Technique& technique : made)
+    {
+      vtkSmartPointer<vtkSoftShadowPass> pass =
+        technique.Create(technique.Variants.empty() ? "" : technique.Variants[0].Name);
+      for (Parameter& parameter : technique.Parameters)
+      {
+        if (parameter.Clamp)
+        {
+          parameter.Allowed = parameter.Clamp(pass);
+        }
+      }
+    }
+    return made;
+  }();
+  return techniques;
+}
+
+std::vector<Technique> MakeTechniques()
+{
+  return {
     { "hard", "vtkHardShadowPass: one shadow map per light, percentage-closer filtering",
       { { "layered", "point lights' cube maps drawn in one layered pass" },
         { "sixpass", "point lights' cube maps drawn one face a pass, as in the paper" } },
       WithCommonParameters({
-        Bind<vtkHardShadowPass, int>("pcf_radius", Integer, Between(0, 8),
+        BindClamped<vtkHardShadowPass, int>("pcf_radius", Integer,
           "radius in texels of the square PCF kernel: a (2r+1)^2-texel footprint; 0 is one tap",
-          &vtkHardShadowPass::SetPCFRadius, &vtkHardShadowPass::GetPCFRadius),
+          VTK_SHADOW_CLAMPED(vtkHardShadowPass, PCFRadius)),
         Bind<vtkHardShadowPass, bool>("hardware_filtering", Boolean, Any(),
           "bilinear depth-comparison filtering of every tap; off gives binary taps",
           &vtkHardShadowPass::SetHardwareFiltering, &vtkHardShadowPass::GetHardwareFiltering),
@@ -164,9 +216,9 @@ const std::vector<Technique>& Techniques()
           "points in the light's sphere, uniform over its disc from every side, as the "
           "ray-cast truth" } },
       WithCommonParameters({
-        Bind<vtkReferenceShadowPass, int>("samples", Integer, Between(1, 4096),
+        BindClamped<vtkReferenceShadowPass, int>("samples", Integer,
           "light samples (shadow maps) per light, rounded down to a square",
-          &vtkReferenceShadowPass::SetNumberOfSamples, &vtkReferenceShadowPass::GetNumberOfSamples),
+          VTK_SHADOW_CLAMPED(vtkReferenceShadowPass, NumberOfSamples)),
         Bind<vtkReferenceShadowPass, unsigned int>("seed", Integer, Between(0.0, 2147483647.0),
           "seed of the light sample jitter", &vtkReferenceShadowPass::SetSeed,
           &vtkReferenceShadowPass::GetSeed),
@@ -190,50 +242,45 @@ const std::vector<Technique>& Techniques()
           "d_blocker; off uses dp and dm",
           &vtkContactHardeningShadowPass::SetUseLightSize,
           &vtkContactHardeningShadowPass::GetUseLightSize),
-        Bind<vtkContactHardeningShadowPass, double>("dp", Number, Between(0.0, 16.0),
+        BindClamped<vtkContactHardeningShadowPass, double>("dp", Number,
           "distance power Dp in D = (occluder distance)^Dp * Dm",
-          &vtkContactHardeningShadowPass::SetDistancePower,
-          &vtkContactHardeningShadowPass::GetDistancePower),
-        Bind<vtkContactHardeningShadowPass, double>("dm", Number, Between(0.0, 1.0e9),
+          VTK_SHADOW_CLAMPED(vtkContactHardeningShadowPass, DistancePower)),
+        BindClamped<vtkContactHardeningShadowPass, double>("dm", Number,
           "distance multiplier Dm in D = (occluder distance)^Dp * Dm",
-          &vtkContactHardeningShadowPass::SetDistanceMultiplier,
-          &vtkContactHardeningShadowPass::GetDistanceMultiplier),
-        Bind<vtkContactHardeningShadowPass, int>("pass_limit", Integer, Between(1, 64),
-          "most blur passes (multipass)", &vtkContactHardeningShadowPass::SetPassLimit,
-          &vtkContactHardeningShadowPass::GetPassLimit),
-        Bind<vtkContactHardeningShadowPass, int>("min_kernel", Integer, Between(1, 255),
+          VTK_SHADOW_CLAMPED(vtkContactHardeningShadowPass, DistanceMultiplier)),
+        BindClamped<vtkContactHardeningShadowPass, int>("pass_limit", Integer,
+          "most blur passes (multipass)",
+          VTK_SHADOW_CLAMPED(vtkContactHardeningShadowPass, PassLimit)),
+        BindClamped<vtkContactHardeningShadowPass, int>("min_kernel", Integer,
           "first kernel size in pixels when the kernel grows (multipass)",
-          &vtkContactHardeningShadowPass::SetMinimumKernelSize,
-          &vtkContactHardeningShadowPass::GetMinimumKernelSize),
-        Bind<vtkContactHardeningShadowPass, int>("max_kernel", Integer, Between(1, 255),
-          "largest kernel size in pixels", &vtkContactHardeningShadowPass::SetMaximumKernelSize,
-          &vtkContactHardeningShadowPass::GetMaximumKernelSize),
+          VTK_SHADOW_CLAMPED(vtkContactHardeningShadowPass, MinimumKernelSize)),
+        BindClamped<vtkContactHardeningShadowPass, int>("max_kernel", Integer,
+          "largest kernel size in pixels",
+          VTK_SHADOW_CLAMPED(vtkContactHardeningShadowPass, MaximumKernelSize)),
         Bind<vtkContactHardeningShadowPass, bool>("growing_kernel", Boolean, Any(),
           "grow the kernel by 2 pixels a pass from min_kernel (multipass)",
           &vtkContactHardeningShadowPass::SetGrowingKernel,
           &vtkContactHardeningShadowPass::GetGrowingKernel),
-        Bind<vtkContactHardeningShadowPass, int>("taps", Integer, Between(1, 64),
-          "Poisson-disk taps per blur (multipass)", &vtkContactHardeningShadowPass::SetPoissonTaps,
-          &vtkContactHardeningShadowPass::GetPoissonTaps),
+        BindClamped<vtkContactHardeningShadowPass, int>("taps", Integer,
+          "Poisson-disk taps per blur (multipass)",
+          VTK_SHADOW_CLAMPED(vtkContactHardeningShadowPass, PoissonTaps)),
         Bind<vtkContactHardeningShadowPass, bool>("dilation", Boolean, Any(),
           "spread D to lit pixels near shadows: the outer penumbra (pass 3)",
           &vtkContactHardeningShadowPass::SetDilation, &vtkContactHardeningShadowPass::GetDilation),
-        Bind<vtkContactHardeningShadowPass, int>("dilation_size", Integer, Between(1, 255),
-          "dilation kernel size in pixels", &vtkContactHardeningShadowPass::SetDilationSize,
-          &vtkContactHardeningShadowPass::GetDilationSize),
+        BindClamped<vtkContactHardeningShadowPass, int>("dilation_size", Integer,
+          "dilation kernel size in pixels",
+          VTK_SHADOW_CLAMPED(vtkContactHardeningShadowPass, DilationSize)),
         Bind<vtkContactHardeningShadowPass, bool>("early_out", Boolean, Any(),
           "D = 0 deep inside the umbra, so blurs skip it",
           &vtkContactHardeningShadowPass::SetUmbraEarlyOut,
           &vtkContactHardeningShadowPass::GetUmbraEarlyOut),
-        Bind<vtkContactHardeningShadowPass, int>("early_out_size", Integer, Between(1, 255),
+        BindClamped<vtkContactHardeningShadowPass, int>("early_out_size", Integer,
           "early-out neighbourhood in pixels (above max_kernel)",
-          &vtkContactHardeningShadowPass::SetEarlyOutKernelSize,
-          &vtkContactHardeningShadowPass::GetEarlyOutKernelSize),
-        Bind<vtkContactHardeningShadowPass, int>("resolution_divisor", Integer, Between(1, 4),
+          VTK_SHADOW_CLAMPED(vtkContactHardeningShadowPass, EarlyOutKernelSize)),
+        BindClamped<vtkContactHardeningShadowPass, int>("resolution_divisor", Integer,
           "screen-space passes on buffers this many times smaller than the window on each axis; "
           "kernel sizes count their pixels",
-          &vtkContactHardeningShadowPass::SetResolutionDivisor,
-          &vtkContactHardeningShadowPass::GetResolutionDivisor),
+          VTK_SHADOW_CLAMPED(vtkContactHardeningShadowPass, ResolutionDivisor)),
         Bind<vtkContactHardeningShadowPass, bool>("refine_unresolved", Boolean, Any(),
           "where the buffers cannot hold a penumbra (floors seen nearly edge-on), receivers "
           "filter their hard shadow again in light space over the penumbra's width",
@@ -267,13 +314,12 @@ const std::vector<Technique>& Techniques()
       { { "poisson", "blocker search and rotated Poisson-disk PCF sized by the light's radius" },
         { "pcf4", "the chapter's 4-tap PCF" }, { "hard", "one tap" } },
       WithCommonParameters({
-        Bind<vtkOmnidirectionalShadowPass, int>("pcf_radius", Integer, Between(1, 8),
-          "pcf4: distance between the taps, in texels", &vtkOmnidirectionalShadowPass::SetPCFRadius,
-          &vtkOmnidirectionalShadowPass::GetPCFRadius),
-        Bind<vtkOmnidirectionalShadowPass, int>("taps", Integer, Between(1, 32),
+        BindClamped<vtkOmnidirectionalShadowPass, int>("pcf_radius", Integer,
+          "pcf4: distance between the taps, in texels",
+          VTK_SHADOW_CLAMPED(vtkOmnidirectionalShadowPass, PCFRadius)),
+        BindClamped<vtkOmnidirectionalShadowPass, int>("taps", Integer,
           "poisson: taps of the blocker search and of the filter",
-          &vtkOmnidirectionalShadowPass::SetPoissonTaps,
-          &vtkOmnidirectionalShadowPass::GetPoissonTaps),
+          VTK_SHADOW_CLAMPED(vtkOmnidirectionalShadowPass, PoissonTaps)),
         Bind<vtkSoftShadowPass, bool>("single_pass_cube_maps", Boolean, Any(),
           "draw the six cube faces in one layered pass (else six passes, as the paper)",
           &vtkSoftShadowPass::SetSinglePassCubeMaps, &vtkSoftShadowPass::GetSinglePassCubeMaps),
@@ -302,32 +348,30 @@ const std::vector<Technique>& Techniques()
       { { "soft", "four samples, penumbrae from the light's radius" },
         { "hard", "one sample: anti-aliased hard shadows" } },
       WithCommonParameters({
-        Bind<vtkSilhouetteShadowPass, double>("expected_width", Number, Between(0.0, 256.0),
+        BindClamped<vtkSilhouetteShadowPass, double>("expected_width", Number,
           "expected silhouette width in shadow-map texels; 0 sizes it from the light (twice the "
           "widest penumbra; 2 for hard shadows)",
-          &vtkSilhouetteShadowPass::SetExpectedWidth, &vtkSilhouetteShadowPass::GetExpectedWidth),
-        Bind<vtkSilhouetteShadowPass, double>("edge_width", Number, Between(0.01, 16.0),
+          VTK_SHADOW_CLAMPED(vtkSilhouetteShadowPass, ExpectedWidth)),
+        BindClamped<vtkSilhouetteShadowPass, double>("edge_width", Number,
           "texels over which a hard edge goes from lit to shadowed (its anti-aliasing)",
-          &vtkSilhouetteShadowPass::SetEdgeWidth, &vtkSilhouetteShadowPass::GetEdgeWidth),
-        Bind<vtkSilhouetteShadowPass, double>("max_penumbra", Number, Between(1.0, 128.0),
+          VTK_SHADOW_CLAMPED(vtkSilhouetteShadowPass, EdgeWidth)),
+        BindClamped<vtkSilhouetteShadowPass, double>("max_penumbra", Number,
           "soft: widest penumbra half-width kept, in texels (wider ones are clamped)",
-          &vtkSilhouetteShadowPass::SetMaximumPenumbra,
-          &vtkSilhouetteShadowPass::GetMaximumPenumbra),
-        Bind<vtkSilhouetteShadowPass, double>("sample_spread", Number, Between(0.0, 0.8),
+          VTK_SHADOW_CLAMPED(vtkSilhouetteShadowPass, MaximumPenumbra)),
+        BindClamped<vtkSilhouetteShadowPass, double>("sample_spread", Number,
           "soft: distance of the three outer samples from the point, in penumbra half-widths",
-          &vtkSilhouetteShadowPass::SetSampleSpread, &vtkSilhouetteShadowPass::GetSampleSpread),
-        Bind<vtkSilhouetteShadowPass, int>("lookup_texels", Integer, Between(8, 4096),
-          "lookup texture texels per segment of eq. 4", &vtkSilhouetteShadowPass::SetLookupTexels,
-          &vtkSilhouetteShadowPass::GetLookupTexels),
-        Bind<vtkSilhouetteShadowPass, int>("lookup_rows", Integer, Between(2, 1024),
+          VTK_SHADOW_CLAMPED(vtkSilhouetteShadowPass, SampleSpread)),
+        BindClamped<vtkSilhouetteShadowPass, int>("lookup_texels", Integer,
+          "lookup texture texels per segment of eq. 4",
+          VTK_SHADOW_CLAMPED(vtkSilhouetteShadowPass, LookupTexels)),
+        BindClamped<vtkSilhouetteShadowPass, int>("lookup_rows", Integer,
           "soft: lookup texture rows, one penumbra width each",
-          &vtkSilhouetteShadowPass::SetLookupRows, &vtkSilhouetteShadowPass::GetLookupRows),
-        Bind<vtkSilhouetteShadowPass, int>("silhouette_geometry", Integer, Between(0, 1),
+          VTK_SHADOW_CLAMPED(vtkSilhouetteShadowPass, LookupRows)),
+        BindClamped<vtkSilhouetteShadowPass, int>("silhouette_geometry", Integer,
           "how pass 2 covers the thick silhouette: 1 a rectangle around each silhouette edge "
           "(geometry shader), 0 each silhouette face grown about its incenter (the paper's eq. 2); "
           "the same map",
-          &vtkSilhouetteShadowPass::SetSilhouetteGeometry,
-          &vtkSilhouetteShadowPass::GetSilhouetteGeometry),
+          VTK_SHADOW_CLAMPED(vtkSilhouetteShadowPass, SilhouetteGeometry)),
         Bind<vtkSilhouetteShadowPass, bool>("per_face_attributes", Boolean, Any(),
           "topology aware meshes once a face (instanced), not once a corner: a third of the "
           "memory (always so with silhouette_geometry 1)",
@@ -365,24 +409,24 @@ const std::vector<Technique>& Techniques()
       "outside a hard shadow-map umbra",
       {},
       WithCommonParameters({
-        Bind<vtkSmoothieShadowPass, double>("thickness", Number, Between(0.0, 256.0),
+        BindClamped<vtkSmoothieShadowPass, double>("thickness", Number,
           "fixed smoothie thickness in shadow-map texels, with the report's alpha / (1 - b/r); "
           "0 sizes it from the light's radius (the outer half of its penumbra)",
-          &vtkSmoothieShadowPass::SetThickness, &vtkSmoothieShadowPass::GetThickness),
-        Bind<vtkSmoothieShadowPass, double>("penumbra_scale", Number, Between(0.01, 4.0),
+          VTK_SHADOW_CLAMPED(vtkSmoothieShadowPass, Thickness)),
+        BindClamped<vtkSmoothieShadowPass, double>("penumbra_scale", Number,
           "sized from the radius: the soft edge's width over the outer half of the light's "
           "penumbra",
-          &vtkSmoothieShadowPass::SetPenumbraScale, &vtkSmoothieShadowPass::GetPenumbraScale),
-        Bind<vtkSmoothieShadowPass, int>("falloff", Integer, Between(0, 1),
+          VTK_SHADOW_CLAMPED(vtkSmoothieShadowPass, PenumbraScale)),
+        BindClamped<vtkSmoothieShadowPass, int>("falloff", Integer,
           "how the shadow rises across a smoothie: 0 linearly (the report's alpha'), 1 as its "
           "square root, steepest at the umbra",
-          &vtkSmoothieShadowPass::SetFalloff, &vtkSmoothieShadowPass::GetFalloff),
-        Bind<vtkSmoothieShadowPass, double>("max_thickness", Number, Between(1.0, 1024.0),
-          "widest smoothie, in shadow-map texels", &vtkSmoothieShadowPass::SetMaximumThickness,
-          &vtkSmoothieShadowPass::GetMaximumThickness),
-        Bind<vtkSmoothieShadowPass, int>("silhouette_search", Integer, Between(0, 1),
+          VTK_SHADOW_CLAMPED(vtkSmoothieShadowPass, Falloff)),
+        BindClamped<vtkSmoothieShadowPass, double>("max_thickness", Number,
+          "widest smoothie, in shadow-map texels",
+          VTK_SHADOW_CLAMPED(vtkSmoothieShadowPass, MaximumThickness)),
+        BindClamped<vtkSmoothieShadowPass, int>("silhouette_search", Integer,
           "how silhouette edges are found: 1 the normal-cone tree, 0 brute force (the same edges)",
-          &vtkSmoothieShadowPass::SetSilhouetteSearch, &vtkSmoothieShadowPass::GetSilhouetteSearch),
+          VTK_SHADOW_CLAMPED(vtkSmoothieShadowPass, SilhouetteSearch)),
         Bind<vtkSmoothieShadowPass, bool>("build_on_gpu", Boolean, Any(),
           "build smoothie edges and corners in a geometry shader (true) or, per frustum, on the "
           "CPU",
@@ -400,10 +444,10 @@ const std::vector<Technique>& Techniques()
           "soft: light samples per view sample (rounded up to 32s)",
           &vtkAliasFreeShadowPass::SetNumberOfLightSamples,
           &vtkAliasFreeShadowPass::GetNumberOfLightSamples),
-        Bind<vtkAliasFreeShadowPass, int>("light_shape", Integer, Between(0, 2),
+        BindClamped<vtkAliasFreeShadowPass, int>("light_shape", Integer,
           "soft, spot lights: 0 a sphere of the radius, 1 a disc, 2 a square of side 2 radius, "
           "facing along the light's axis",
-          &vtkAliasFreeShadowPass::SetLightShape, &vtkAliasFreeShadowPass::GetLightShape),
+          VTK_SHADOW_CLAMPED(vtkAliasFreeShadowPass, LightShape)),
         BindVector3<vtkAliasFreeShadowPass>("light_scale", AtLeast(1.0e-3),
           "soft, spot lights: the shape's scale across the axis (x: the world's x made "
           "perpendicular to the axis, y: the axis crossed with it) and along it (z): an "
@@ -421,17 +465,16 @@ const std::vector<Technique>& Techniques()
         Bind<vtkAliasFreeShadowPass, bool>("jitter", Boolean, Any(),
           "soft: while nothing moves, turn the light samples every frame and average the frames",
           &vtkAliasFreeShadowPass::SetJitter, &vtkAliasFreeShadowPass::GetJitter),
-        Bind<vtkAliasFreeShadowPass, int>("max_frames_accumulated", Integer, Between(1, 1024),
+        BindClamped<vtkAliasFreeShadowPass, int>("max_frames_accumulated", Integer,
           "soft, jitter: most frames averaged",
-          &vtkAliasFreeShadowPass::SetMaximumFramesAccumulated,
-          &vtkAliasFreeShadowPass::GetMaximumFramesAccumulated),
+          VTK_SHADOW_CLAMPED(vtkAliasFreeShadowPass, MaximumFramesAccumulated)),
         Bind<vtkAliasFreeShadowPass, bool>("bent_normals", Boolean, Any(),
           "smooth shading without light leaks at shadow borders: surfaces' Phong normals bent "
           "towards their faces' so that they darken before the faces turned from the light",
           &vtkAliasFreeShadowPass::SetBentNormals, &vtkAliasFreeShadowPass::GetBentNormals),
-        Bind<vtkAliasFreeShadowPass, double>("memory_limit", Number, Between(1.0, 65536.0),
+        BindClamped<vtkAliasFreeShadowPass, double>("memory_limit", Number,
           "MiB the lists, masks and tables may take; a frame needing more is drawn unshadowed",
-          &vtkAliasFreeShadowPass::SetMemoryLimit, &vtkAliasFreeShadowPass::GetMemoryLimit),
+          VTK_SHADOW_CLAMPED(vtkAliasFreeShadowPass, MemoryLimit)),
       }),
       [](const std::string& variant)
       {
@@ -443,7 +486,6 @@ const std::vector<Technique>& Techniques()
         return pass;
       } },
   };
-  return techniques;
 }
 
 const Technique* At(int technique)

@@ -133,6 +133,10 @@ for t, name in enumerate(names):
         st.check(catalog.GetParameter(made, t, p, default)
                  and all(low <= x <= high for x in default[:size]),
                  "%s: default %s in [%g, %g]" % (key, default[:size], low, high))
+        # The catalog's bounds are the class's own: it keeps either end.
+        top = [high if math.isfinite(high) else 1.0] * 3
+        st.check(catalog.SetParameter(made, t, p, top) and catalog.GetParameter(made, t, p, default)
+                 and default[:size] == top[:size], "%s: set to its maximum, read back" % key)
         wanted = [low if math.isfinite(low) else -1.0] * 3
         st.check(catalog.SetParameter(made, t, p, wanted) and catalog.GetParameter(made, t, p, default)
                  and default[:size] == wanted[:size], "%s: set to its minimum, read back" % key)
