@@ -756,7 +756,7 @@ bool vtkSoftShadowPass::RenderDistanceCube(const vtkRenderState* s,
   // Nothing drawn is infinitely far (packed: the largest value): lit.
   const float far = this->DrawsPackedCubeMaps() ? 1.0f : VTK_FLOAT_MAX;
   std::fill(setup.ClearColour, setup.ClearColour + 4, far);
-  this->DistanceStage->SetPacked(this->PackedCubeMaps);
+  this->DistanceStage->SetPacked(this->DrawsPackedCubeMaps());
   setup.Stage = this->DistanceStage.get();
   if (this->SinglePassCubeMaps)
   {

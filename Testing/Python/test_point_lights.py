@@ -69,3 +69,14 @@ soft, _ = st.shadow_only(soft_scene)
 penumbra = geometry & (soft > 0.05) & (soft < 0.95)
 st.check(penumbra.sum() > 4 * np.sum(geometry & (hard > 0.05) & (hard < 0.95)),
          "radius 0.3: the reference grows penumbrae (%d px)" % penumbra.sum())
+
+# Techniques that read float cube maps draw those when PackedCubeMaps is on
+# (one warning), leaving the setting as the user made it: the same shadow.
+for technique in ("silhouette", "smoothies"):
+    scene = st.room_scene(views[0], light_radius=0.2)
+    floats, _ = st.shadow_only(scene, technique)
+    scene["shadows"][technique] = {"packed_cube_maps": True}
+    packed, _ = st.shadow_only(scene, technique)
+    st.check(np.array_equal(floats, packed),
+             "%s with packed_cube_maps: the float cube maps' shadow (%d pixels differ)"
+             % (technique, np.sum(floats != packed)))
