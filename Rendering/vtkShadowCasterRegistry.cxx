@@ -47,6 +47,14 @@ glm::dvec3 vtkShadowCaster::DirectionToModel(const glm::dvec3& world) const
 }
 
 //------------------------------------------------------------------------------
+glm::dvec4 vtkShadowCaster::LightToModel(const glm::dvec4& light) const
+{
+  const glm::dvec3 xyz(light);
+  return light.w == 0.0 ? glm::dvec4(this->DirectionToModel(xyz), 0.0)
+                        : glm::dvec4(this->PointToModel(xyz), 1.0);
+}
+
+//------------------------------------------------------------------------------
 vtkShadowCasterRegistry::vtkShadowCasterRegistry()
   : Glyphs(new vtkShadowGlyphInstances)
 {

@@ -51,6 +51,7 @@
 
 #include <glm/mat4x4.hpp> // for glm::dmat4
 #include <glm/vec3.hpp>   // for glm::dvec3
+#include <glm/vec4.hpp>   // for glm::dvec4
 
 #include <functional> // for std::function
 #include <map>        // for std::map
@@ -86,6 +87,10 @@ struct VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowCaster
   glm::dvec3 PointToModel(const glm::dvec3& world) const;
   /// A world direction (a directional light's) in model coordinates, unit length.
   glm::dvec3 DirectionToModel(const glm::dvec3& world) const;
+  /// A light as a homogeneous world point (vtkShadowMapManager::Light::
+  /// GetHomogeneous(): w 1 a position, w 0 the direction towards it) in
+  /// model coordinates, directions unit length.
+  glm::dvec4 LightToModel(const glm::dvec4& light) const;
 };
 
 class VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowCasterRegistry

@@ -65,6 +65,19 @@ double vtkShadowMapManager::Light::GetSize() const
 }
 
 //------------------------------------------------------------------------------
+glm::dvec4 vtkShadowMapManager::Light::GetHomogeneous() const
+{
+  return this->Directional ? glm::dvec4(-this->Map.Direction, 0.0)
+                           : glm::dvec4(this->Position, 1.0);
+}
+
+//------------------------------------------------------------------------------
+double vtkShadowMapManager::Light::GetHalfSize() const
+{
+  return this->GetSize() / 2.0;
+}
+
+//------------------------------------------------------------------------------
 int vtkShadowMapManager::Update(vtkRenderer* renderer)
 {
   return this->Update(renderer, Budget());

@@ -19,6 +19,7 @@
 
 #include <glm/mat4x4.hpp> // for glm::dmat4
 #include <glm/vec3.hpp>   // for glm::dvec3
+#include <glm/vec4.hpp>   // for glm::dvec4
 
 #include <array>      // for std::array
 #include <functional> // for std::function
@@ -47,6 +48,12 @@ struct VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowFrustum
   glm::dmat4 WorldToMap{ 1.0 }; ///< world to [0,1]^3 map coordinates
   /// World size of the whole map: x + y * (distance along Direction).
   glm::dvec2 Footprint{ 0.0 };
+  /// World size of a texel of a `mapSize` map: for a parallel frustum, at
+  /// any distance; for a perspective one, per unit of distance.
+  double GetTexelSize(int mapSize) const
+  {
+    return (this->Parallel ? this->Footprint.x : this->Footprint.y) / mapSize;
+  }
 };
 
 class VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowMapManager
@@ -75,6 +82,12 @@ public:
     /// The light's width: its diameter (spot, point), or for directional
     /// lights 2 tan(angular radius), the width per unit of distance.
     double GetSize() const;
+    /// Half of GetSize(): the radius, or tan(angular radius).
+    double GetHalfSize() const;
+    /// The light as a homogeneous point: (Position, 1) for spot and point
+    /// lights, (the unit direction towards the light, 0) for directional ones
+    /// (vtkShadowCaster::LightToModel() puts it in a caster's model space).
+    glm::dvec4 GetHomogeneous() const;
     /// The technique's own textures for this light (e.g. a distance map),
     /// kept for the light's slot across frames and released with the maps.
     std::vector<vtkSmartPointer<vtkTextureObject>> Textures;

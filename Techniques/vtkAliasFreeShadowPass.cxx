@@ -42,7 +42,6 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
-#include <glm/trigonometric.hpp>
 
 #include <algorithm>
 #include <array>
@@ -584,7 +583,7 @@ bool vtkAliasFreeShadowPass::RenderFrustum(
   // lights) or the tangent of its angular radius (directional), and how far
   // a face may turn from its centre and still see some of it.
   const double* scale = this->LightScale;
-  const double spread = light.Directional ? std::tan(glm::radians(light.Radius)) : 0.0;
+  const double spread = light.Directional ? light.GetHalfSize() : 0.0;
   const float reach = !soft
     ? 0.0f
     : static_cast<float>(light.Directional ? spread

@@ -20,7 +20,6 @@
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
-#include <glm/trigonometric.hpp>
 #include <glm/vec2.hpp>
 
 #include <cmath>
@@ -136,8 +135,7 @@ bool vtkReferenceShadowPass::RenderScreenSpace(const vtkRenderState* s)
       glm::dvec3 direction = light.Direction;
       if (light.Directional)
       {
-        const double spread = std::tan(glm::radians(light.Radius));
-        direction = glm::normalize(light.Direction + spread * (d.x * e1 + d.y * e2));
+        direction = glm::normalize(light.Direction + light.GetHalfSize() * (d.x * e1 + d.y * e2));
       }
       else
       {

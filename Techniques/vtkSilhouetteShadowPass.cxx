@@ -28,8 +28,6 @@
 #include "vtkSilhouetteEdgesVS.h"
 #include "vtkSilhouetteLookupFS.h"
 
-#include <glm/trigonometric.hpp>
-
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -256,10 +254,7 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
     // e) behind a directional one (K = tan of the angular radius over a
     // texel's size); the widest is for an edge at the near plane over a
     // receiver at the far one.
-    const double texel = (frustum.Parallel ? frustum.Footprint.x : frustum.Footprint.y) /
-      static_cast<double>(this->MapSize);
-    const double size = light.Directional ? std::tan(glm::radians(light.Radius)) : light.Radius;
-    const double k = soft ? size / texel : 0.0;
+    const double k = soft ? light.GetHalfSize() / frustum.GetTexelSize(this->MapSize) : 0.0;
     const double widest = frustum.Parallel ? k * (frustum.Far - frustum.Near)
                                            : k * (1.0 / frustum.Near - 1.0 / frustum.Far);
     band.Range[0] = static_cast<float>(frustum.Near);
@@ -344,10 +339,8 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
     for (const auto& mesh : meshes)
     {
       const vtkShadowCaster& caster = *mesh.first;
-      const glm::dvec3 toLight = light.Directional ? caster.DirectionToModel(-frustum.Direction)
-                                                   : caster.PointToModel(light.Position);
-      const float lightMC[4] = { static_cast<float>(toLight.x), static_cast<float>(toLight.y),
-        static_cast<float>(toLight.z), light.Directional ? 0.0f : 1.0f };
+      const glm::vec4 toLight(caster.LightToModel(light.GetHomogeneous()));
+      const float lightMC[4] = { toLight.x, toLight.y, toLight.z, toLight.w };
       vtkTextureObject* depthMap = light.Point ? nullptr : light.DepthMap.Get();
       const bool bands = this->SilhouetteGeometry == EdgeRectangles;
       mesh.second->SetShaders(this->Internal->VertexShaders[bands][light.Point],

@@ -34,7 +34,6 @@
 #include "vtkSmoothieQuadsVS.h"
 
 #include <glm/gtc/type_ptr.hpp>
-#include <glm/trigonometric.hpp>
 
 #include <algorithm>
 #include <array>
@@ -438,9 +437,8 @@ bool vtkSmoothieShadowPass::RenderShadowMaps(const vtkRenderState* s)
     for (size_t slot = 0; slot < lights.size(); ++slot)
     {
       const auto& light = lights[slot];
-      const glm::dvec3 l = light.Directional ? caster.DirectionToModel(-light.Map.Direction)
-                                             : caster.PointToModel(light.Position);
-      const std::array<double, 4> key = { { l.x, l.y, l.z, light.Directional ? 0.0 : 1.0 } };
+      const glm::dvec4 l = caster.LightToModel(light.GetHomogeneous());
+      const std::array<double, 4> key = { { l.x, l.y, l.z, l.w } };
       SlotEdges& entry = slots[slot];
       if (!entry.Geometry)
       {
@@ -538,11 +536,9 @@ bool vtkSmoothieShadowPass::RenderShadowMaps(const vtkRenderState* s)
     // over a texel's width behind a directional one.
     const vtkShadowFrustum& frustum = light.Point ? light.Faces[0] : light.Map;
     const double unit = 2.0 / this->MapSize; // a texel in screen units
-    const double perTexel =
-      (frustum.Parallel ? frustum.Footprint.x : frustum.Footprint.y) / this->MapSize;
-    const double size = light.Directional ? std::tan(glm::radians(light.Radius)) : light.Radius;
     const float thickness[4] = { static_cast<float>(this->Thickness * unit),
-      static_cast<float>(this->PenumbraScale * size / perTexel * unit),
+      static_cast<float>(
+        this->PenumbraScale * light.GetHalfSize() / frustum.GetTexelSize(this->MapSize) * unit),
       frustum.Parallel ? 1.0f : 0.0f, static_cast<float>(this->MaximumThickness * unit) };
     const float mapSize = static_cast<float>(this->MapSize);
     const int falloff = this->Falloff;
