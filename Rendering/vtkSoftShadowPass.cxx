@@ -10,6 +10,7 @@
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
+#include "vtkOpenGLRenderTimer.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLState.h"
@@ -393,6 +394,50 @@ void vtkSoftShadowPass::vtkReceiverStage::SetUniforms(vtkShaderProgram* program,
 }
 
 //------------------------------------------------------------------------------
+// GPU timers of the frame's steps (VTK's timer queries, read without waiting).
+class vtkSoftShadowPass::vtkStepTimers
+{
+public:
+  enum Step
+  {
+    LightSpace,
+    ScreenSpace,
+    Receivers
+  };
+
+  /// Times the GPU work `draw` issues as `step`.
+  template <typename Draw>
+  bool Time(Step step, Draw draw)
+  {
+    this->Timers[step].ReusableStart();
+    const bool result = draw();
+    this->Timers[step].ReusableStop();
+    return result;
+  }
+
+  /// The last completed time of every step, in ms.
+  void Read(std::array<double, 3>& times)
+  {
+    for (size_t step = 0; step < times.size(); ++step)
+    {
+      const double seconds = this->Timers[step].GetReusableElapsedSeconds();
+      times[step] = seconds > 0.0 ? 1000.0 * seconds : times[step];
+    }
+  }
+
+  void ReleaseGraphicsResources()
+  {
+    for (vtkOpenGLRenderTimer& timer : this->Timers)
+    {
+      timer.ReleaseGraphicsResources();
+    }
+  }
+
+private:
+  std::array<vtkOpenGLRenderTimer, 3> Timers;
+};
+
+//------------------------------------------------------------------------------
 vtkSoftShadowPass::vtkSoftShadowPass()
   : Casters(new vtkShadowCasterRegistry)
   , Maps(new vtkShadowMapManager)
@@ -578,18 +623,27 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   }
 
   // 2-3. Draw the technique's maps and screen-space passes.
+  if (!this->Timers)
+  {
+    this->Timers.reset(new vtkStepTimers);
+  }
+  vtkStepTimers& timers = *this->Timers;
   bool drawn = !shadowed.empty();
   if (drawn)
   {
     drawn =
       this->CheckRequirements(vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow())) &&
-      this->RenderShadowMaps(s);
+      timers.Time(vtkStepTimers::LightSpace, [&] { return this->RenderShadowMaps(s); });
   }
   if (drawn && traits.ScreenSpace)
   {
     this->Screen->SetResolutionDivisor(traits.ScreenResolutionDivisor);
-    drawn = this->Screen->Update(s) && this->RenderScreenSpace(s) &&
-      this->Screen->Pack(static_cast<int>(shadowed.size()));
+    drawn = timers.Time(vtkStepTimers::ScreenSpace,
+      [&]
+      {
+        return this->Screen->Update(s) && this->RenderScreenSpace(s) &&
+          this->Screen->Pack(static_cast<int>(shadowed.size()));
+      });
   }
   if (!drawn)
   {
@@ -597,7 +651,13 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   }
 
   // 4. Draw the scene with the shadow term in every receiver's shader.
-  this->RenderReceivers(s, drawn && traits.ScreenSpace);
+  timers.Time(vtkStepTimers::Receivers,
+    [&]
+    {
+      this->RenderReceivers(s, drawn && traits.ScreenSpace);
+      return true;
+    });
+  timers.Read(this->StepTimes);
   vtkOpenGLCheckErrorMacro("failed after Render");
 }
 
@@ -949,6 +1009,11 @@ void vtkSoftShadowPass::ReleaseGraphicsResources(vtkWindow* w)
   this->Maps->ReleaseGraphicsResources(w);
   this->Screen->ReleaseGraphicsResources(w);
   this->Drawer->ReleaseGraphicsResources(w);
+  if (this->Timers)
+  {
+    this->Timers->ReleaseGraphicsResources();
+    this->Timers.reset();
+  }
   if (this->DelegatePass)
   {
     this->DelegatePass->ReleaseGraphicsResources(w);

@@ -254,6 +254,21 @@ public:
    */
   int GetMaximumNumberOfShadowedLights(bool pointLights) const;
 
+  ///@{
+  /**
+   * GPU time in milliseconds of each step of the last frame whose timer
+   * queries had completed when it ended (so usually the frame before): the
+   * light-space maps (step 2, the technique's own light-space passes
+   * included), the screen-space passes (step 3; 0 for techniques without),
+   * and the scene drawn with the shadow term (step 4). Measured for every
+   * technique alike by timer queries, which do not stall the frame; 0 where
+   * the context has none, and before the second frame.
+   */
+  double GetLightSpaceTime() const { return this->StepTimes[0]; }
+  double GetScreenSpaceTime() const { return this->StepTimes[1]; }
+  double GetReceiversTime() const { return this->StepTimes[2]; }
+  ///@}
+
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
@@ -527,6 +542,9 @@ private:
   std::vector<ReceiverTexture>
     FrameReceiverTextures; ///< GetReceiverTextures() while receivers draw
   Traits FrameTraits;      ///< GetTraits(), asked at the start of this frame
+  class vtkStepTimers;
+  std::unique_ptr<vtkStepTimers> Timers; ///< steps 2, 3 and 4; made in the first frame
+  std::array<double, 3> StepTimes{};     ///< ms, as the timers last completed
   bool LinearMaps = false;
   bool PointLightReported = false;
   bool UncombinedReported = false;

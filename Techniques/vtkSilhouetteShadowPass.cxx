@@ -7,6 +7,7 @@
 #include "vtkLight.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderTimer.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
@@ -30,7 +31,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -115,6 +115,7 @@ struct vtkSilhouetteShadowPass::Internals
   // Pass 2's shaders, [rectangles around edges][a cube face (no 2D depth
   // map to read)]: the vertex shader's with the common depths.
   std::array<std::array<std::string, 2>, 2> VertexShaders, FragmentShaders;
+  vtkOpenGLRenderTimer PassTimer; ///< pass 2, with MeasureSilhouettePass
   Internals()
   {
     for (int bands = 0; bands < 2; ++bands)
@@ -234,12 +235,10 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
   }
   this->Internal->Meshes.Prune(*this->Casters);
 
-  // Pass 1 finished first: llvmpipe, for one, draws it only when flushed.
   if (this->MeasureSilhouettePass)
   {
-    glFinish();
+    this->Internal->PassTimer.ReusableStart();
   }
-  const auto start = std::chrono::steady_clock::now();
   auto& bands = this->Internal->Bands;
   bands.resize(lights.size());
   for (size_t slot = 0; slot < lights.size(); ++slot)
@@ -385,10 +384,10 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
   }
   if (this->MeasureSilhouettePass)
   {
-    glFinish();
+    this->Internal->PassTimer.ReusableStop();
+    const double seconds = this->Internal->PassTimer.GetReusableElapsedSeconds();
+    this->SilhouettePassTime = seconds > 0.0 ? 1000.0 * seconds : this->SilhouettePassTime;
   }
-  this->SilhouettePassTime =
-    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
   this->TopologyAwareMeshBytes = 0;
   for (const auto& mesh : meshes)
@@ -479,6 +478,7 @@ void vtkSilhouetteShadowPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);
   this->Internal->Meshes.Clear();
+  this->Internal->PassTimer.ReleaseGraphicsResources();
   for (auto& band : this->Internal->Bands)
   {
     band.LookupKey.clear();

@@ -193,9 +193,9 @@ public:
   ///@{
   /**
    * Results of the last frame: the bytes of every caster's TAM on the GPU,
-   * the TAM vertices drawn per light, and the silhouette pass's wall time
-   * (ms, all lights; measured with glFinish() around it only when
-   * MeasureSilhouettePass is on, which slows the frame).
+   * the TAM vertices drawn per light, and the silhouette pass's GPU time
+   * (ms, all lights, of the last frame whose timer queries had completed;
+   * measured only when MeasureSilhouettePass is on).
    */
   vtkGetMacro(TopologyAwareMeshBytes, vtkIdType);
   vtkGetMacro(TopologyAwareMeshVertices, vtkIdType);

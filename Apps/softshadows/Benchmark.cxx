@@ -4,16 +4,17 @@
 
 #include "vtkSoftShadowPass.h"
 
+#include "vtkShadowVTKVersion.h"
 #include <vtkLight.h>
 #include <vtkLightCollection.h>
 #include <vtkMath.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
-#include "vtkShadowVTKVersion.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <iomanip>
@@ -105,6 +106,7 @@ std::vector<Timing> RunBenchmark(vtkRenderWindow* window, vtkRenderer* renderer,
   std::vector<std::vector<double>> times(techniques.size());
   std::vector<std::vector<double>> cpu(techniques.size());
   std::vector<std::vector<double>> pass(techniques.size());
+  std::vector<std::array<std::vector<double>, 3>> steps(techniques.size());
   LightOrbit orbit(FirstLight(renderer));
   const double total = static_cast<double>((warmUp + frames) * techniques.size());
   for (int round = 0; round < warmUp + frames; ++round)
@@ -140,6 +142,12 @@ std::vector<Timing> RunBenchmark(vtkRenderWindow* window, vtkRenderer* renderer,
         {
           pass[t].push_back(techniques[t].PassTime());
         }
+        if (const vtkSoftShadowPass* shadows = techniques[t].Shadows)
+        {
+          steps[t][0].push_back(shadows->GetLightSpaceTime());
+          steps[t][1].push_back(shadows->GetScreenSpaceTime());
+          steps[t][2].push_back(shadows->GetReceiversTime());
+        }
       }
     }
   }
@@ -155,6 +163,9 @@ std::vector<Timing> RunBenchmark(vtkRenderWindow* window, vtkRenderer* renderer,
     timing.MedianMs = Median(times[t]);
     timing.CpuMedianMs = cpu[t].empty() ? -1.0 : Median(cpu[t]);
     timing.PassMedianMs = pass[t].empty() ? -1.0 : Median(pass[t]);
+    timing.LightSpaceMedianMs = steps[t][0].empty() ? -1.0 : Median(steps[t][0]);
+    timing.ScreenSpaceMedianMs = steps[t][1].empty() ? -1.0 : Median(steps[t][1]);
+    timing.ReceiversMedianMs = steps[t][2].empty() ? -1.0 : Median(steps[t][2]);
     timing.MapSize = mapSize;
     timing.Size = { window->GetSize()[0], window->GetSize()[1] };
     hardMean = timing.Technique == "hard" ? timing.MeanMs : hardMean;
@@ -179,10 +190,14 @@ void PrintTimingTable(std::ostream& os, const std::vector<Timing>& timings)
      << first.MapSize << "^2, " << first.Frames << " frames each (light moving):\n";
   os << std::left << std::setw(22) << "technique" << std::right << std::setw(11) << "mean ms"
      << std::setw(11) << "median ms" << std::setw(10) << "x hard";
-  // The techniques' own CPU work (silhouette searches) and own light-space
-  // pass (the silhouette pass), as columns where any technique reports them.
+  // The framework's steps on the GPU, then the techniques' own CPU work
+  // (silhouette searches) and own light-space pass (the silhouette pass), as
+  // columns where any technique reports them.
   std::vector<std::pair<double Timing::*, const char*>> columns;
-  for (const auto& column : { std::make_pair(&Timing::CpuMedianMs, "own CPU ms"),
+  for (const auto& column : { std::make_pair(&Timing::LightSpaceMedianMs, "maps GPU ms"),
+         std::make_pair(&Timing::ScreenSpaceMedianMs, "screen GPU ms"),
+         std::make_pair(&Timing::ReceiversMedianMs, "scene GPU ms"),
+         std::make_pair(&Timing::CpuMedianMs, "own CPU ms"),
          std::make_pair(&Timing::PassMedianMs, "own pass ms") })
   {
     if (std::any_of(timings.begin(), timings.end(),
@@ -228,6 +243,12 @@ void PrintTimingJson(std::ostream& os, const std::vector<Timing>& timings)
     line["ratio_to_hard"] = Round3(timing.RatioToHard);
     line["map_size"] = timing.MapSize;
     line["size"] = timing.Size;
+    if (timing.LightSpaceMedianMs >= 0.0)
+    {
+      line["light_space_median_ms"] = Round3(timing.LightSpaceMedianMs);
+      line["screen_space_median_ms"] = Round3(timing.ScreenSpaceMedianMs);
+      line["receivers_median_ms"] = Round3(timing.ReceiversMedianMs);
+    }
     if (timing.CpuMedianMs >= 0.0)
     {
       line["cpu_median_ms"] = Round3(timing.CpuMedianMs);

@@ -30,6 +30,12 @@ struct Timing
   double RatioToHard = 0.0;   ///< 0 when `hard` was not timed
   double CpuMedianMs = -1.0;  ///< the technique's own CPU work a frame; < 0: not reported
   double PassMedianMs = -1.0; ///< its own light-space pass a frame; < 0: not reported
+  /// GPU time of the framework's steps a frame (vtkSoftShadowPass's timer
+  /// queries): light-space maps, screen-space passes, the scene with its
+  /// receivers; < 0 for VTK's own pass.
+  double LightSpaceMedianMs = -1.0;
+  double ScreenSpaceMedianMs = -1.0;
+  double ReceiversMedianMs = -1.0;
   int MapSize = 0;
   std::array<int, 2> Size{ 0, 0 };
 };

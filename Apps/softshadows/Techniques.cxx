@@ -119,7 +119,7 @@ Technique TechniqueOf(int technique)
     }
     if (auto* silhouette = vtkSilhouetteShadowPass::SafeDownCast(pass))
     {
-      // glFinish() around pass 2, which the receivers wait for anyway.
+      // Pass 2 by timer queries: nothing waits for them.
       silhouette->MeasureSilhouettePassOn();
       instance.PassTime = [silhouette]() { return silhouette->GetSilhouettePassTime(); };
     }

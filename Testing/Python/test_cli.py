@@ -124,7 +124,17 @@ with tempfile.TemporaryDirectory() as folder:
     st.check(names == ["hard", "reference"], "bench adds hard: %s" % names)
     for row in rows:
         st.check(set(row) == {"technique", "frames", "mean_ms", "median_ms", "ratio_to_hard",
-                              "map_size", "size"}, "bench JSON keys for %s" % row["technique"])
+                              "map_size", "size", "light_space_median_ms",
+                              "screen_space_median_ms", "receivers_median_ms"},
+                 "bench JSON keys for %s" % row["technique"])
+        # Every technique's steps by timer queries: maps and scene take time,
+        # the screen-space step only for a technique that has one.
+        st.check(row["light_space_median_ms"] > 0 and row["receivers_median_ms"] > 0
+                 and (row["screen_space_median_ms"] > 0) == (row["technique"] == "reference"),
+                 "bench: %s's GPU steps %s" % (row["technique"],
+                                                [row[k] for k in ("light_space_median_ms",
+                                                                  "screen_space_median_ms",
+                                                                  "receivers_median_ms")]))
     hard_row = [r for r in rows if r["technique"] == "hard"][0]
     st.check(abs(hard_row["ratio_to_hard"] - 1.0) < 1e-9 and hard_row["size"] == [64, 48],
              "bench: hard's ratio is 1 and the size is the override")
