@@ -16,6 +16,7 @@ set(softshadows_rendering_framework_classes
   vtkShadowDistanceStage
   vtkShadowDrawer
   vtkShadowGeometry
+  vtkShadowGPUTimer
   vtkShadowMapManager
   vtkShadowParallelMaps
   vtkShadowScreenBuffers

@@ -195,12 +195,7 @@ int vtkShadowMapManager::Update(
 //------------------------------------------------------------------------------
 void vtkShadowMapManager::Choose(std::vector<Light>& candidates, const Budget& budget)
 {
-  auto units = [&](const Light& light) { return budget.Units ? budget.Units(light) : 1; };
-  int needed = 0;
-  for (const Light& light : candidates)
-  {
-    needed += units(light);
-  }
+  const int needed = static_cast<int>(candidates.size()) * budget.UnitsPerLight;
   if (budget.TextureUnits < 0 || needed <= budget.TextureUnits)
   {
     return;
@@ -242,11 +237,10 @@ void vtkShadowMapManager::Choose(std::vector<Light>& candidates, const Budget& b
   int left = budget.TextureUnits;
   for (size_t i : order)
   {
-    const int cost = units(candidates[i]);
-    if (cost <= left)
+    if (budget.UnitsPerLight <= left)
     {
       chosen[i] = true;
-      left -= cost;
+      left -= budget.UnitsPerLight;
     }
   }
   std::vector<Light> shadowed;

@@ -21,10 +21,9 @@
 #include <glm/vec3.hpp>   // for glm::dvec3
 #include <glm/vec4.hpp>   // for glm::dvec4
 
-#include <array>      // for std::array
-#include <functional> // for std::function
-#include <string>     // for std::string
-#include <vector>     // for std::vector
+#include <array>  // for std::array
+#include <string> // for std::string
+#include <vector> // for std::vector
 
 class vtkLight;
 class vtkOpenGLRenderWindow;
@@ -99,13 +98,13 @@ public:
   /**
    * What a technique can shadow: whether it shadows point lights, and how
    * many texture units its receivers' shaders may give the shadows, each
-   * light taking `Units(light)` of them.
+   * light taking UnitsPerLight of them.
    */
   struct Budget
   {
     bool PointLights = true;
-    int TextureUnits = -1;                  ///< < 0: no limit
-    std::function<int(const Light&)> Units; ///< unset: 1 a light
+    int TextureUnits = -1; ///< < 0: no limit
+    int UnitsPerLight = 1;
   };
 
   /**

@@ -10,7 +10,6 @@
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
-#include "vtkOpenGLRenderTimer.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLState.h"
@@ -231,13 +230,9 @@ void vtkSoftShadowPass::vtkReceiverStage::PostReplace(vtkShadowShaderSources& so
   // the reserve for the next frames.
   const int own = lit ? sources.CountTextures() : 0;
   pass->ReceiverOwnTextures = std::max(pass->ReceiverOwnTextures, own);
-  int room = pass->TextureUnits - own - pass->FrameTraits.ReceiverTexturesPerFrame;
-  size_t count = 0;
-  while (count < lights.size() && pass->ReceiverTextures() <= room)
-  {
-    room -= pass->ReceiverTextures();
-    ++count;
-  }
+  const int room = pass->TextureUnits - own - pass->FrameTraits.ReceiverTexturesPerFrame;
+  const size_t count =
+    std::min(lights.size(), static_cast<size_t>(std::max(room, 0) / pass->ReceiverTextures()));
   if (lit && count < lights.size())
   {
     sources.AddMiss("its own " + std::to_string(own) + " textures leave room for the shadows of " +
@@ -394,50 +389,6 @@ void vtkSoftShadowPass::vtkReceiverStage::SetUniforms(vtkShaderProgram* program,
 }
 
 //------------------------------------------------------------------------------
-// GPU timers of the frame's steps (VTK's timer queries, read without waiting).
-class vtkSoftShadowPass::vtkStepTimers
-{
-public:
-  enum Step
-  {
-    LightSpace,
-    ScreenSpace,
-    Receivers
-  };
-
-  /// Times the GPU work `draw` issues as `step`.
-  template <typename Draw>
-  bool Time(Step step, Draw draw)
-  {
-    this->Timers[step].ReusableStart();
-    const bool result = draw();
-    this->Timers[step].ReusableStop();
-    return result;
-  }
-
-  /// The last completed time of every step, in ms.
-  void Read(std::array<double, 3>& times)
-  {
-    for (size_t step = 0; step < times.size(); ++step)
-    {
-      const double seconds = this->Timers[step].GetReusableElapsedSeconds();
-      times[step] = seconds > 0.0 ? 1000.0 * seconds : times[step];
-    }
-  }
-
-  void ReleaseGraphicsResources()
-  {
-    for (vtkOpenGLRenderTimer& timer : this->Timers)
-    {
-      timer.ReleaseGraphicsResources();
-    }
-  }
-
-private:
-  std::array<vtkOpenGLRenderTimer, 3> Timers;
-};
-
-//------------------------------------------------------------------------------
 vtkSoftShadowPass::vtkSoftShadowPass()
   : Casters(new vtkShadowCasterRegistry)
   , Maps(new vtkShadowMapManager)
@@ -521,9 +472,9 @@ int vtkSoftShadowPass::GetNumberOfUnshadowedLights() const
 }
 
 //------------------------------------------------------------------------------
-int vtkSoftShadowPass::GetMaximumNumberOfShadowedLights(bool pointLights) const
+// A point light takes the same units as any light.
+int vtkSoftShadowPass::GetMaximumNumberOfShadowedLights(bool vtkNotUsed(pointLights)) const
 {
-  (void)pointLights; // a point light takes the same units as any light
   return std::max(this->ShadowTextureUnits(), 0) / this->ReceiverTextures();
 }
 
@@ -584,7 +535,7 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
     // Every process must shadow the same lights: their maps are reduced together.
     budget.TextureUnits = this->Parallel->CombineMinimum(budget.TextureUnits);
   }
-  budget.Units = [this](const vtkShadowMapManager::Light&) { return this->ReceiverTextures(); };
+  budget.UnitsPerLight = this->ReceiverTextures();
   this->Maps->Update(renderer, budget, this->Parallel.get());
   this->Casters->SetBuildGlyphInstances(traits.CasterGeometry);
   this->Casters->Update(renderer);
@@ -622,28 +573,23 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
     this->ReportedUnshadowed = unshadowed;
   }
 
-  // 2-3. Draw the technique's maps and screen-space passes.
-  if (!this->Timers)
-  {
-    this->Timers.reset(new vtkStepTimers);
-  }
-  vtkStepTimers& timers = *this->Timers;
-  bool drawn = !shadowed.empty();
+  // 2-3. Draw the technique's maps and screen-space passes, each step timed
+  // on the GPU.
+  bool drawn = !shadowed.empty() &&
+    this->CheckRequirements(vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow()));
   if (drawn)
   {
-    drawn =
-      this->CheckRequirements(vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow())) &&
-      timers.Time(vtkStepTimers::LightSpace, [&] { return this->RenderShadowMaps(s); });
+    this->LightSpaceTimer.Start();
+    drawn = this->RenderShadowMaps(s);
+    this->LightSpaceTimer.Stop();
   }
   if (drawn && traits.ScreenSpace)
   {
     this->Screen->SetResolutionDivisor(traits.ScreenResolutionDivisor);
-    drawn = timers.Time(vtkStepTimers::ScreenSpace,
-      [&]
-      {
-        return this->Screen->Update(s) && this->RenderScreenSpace(s) &&
-          this->Screen->Pack(static_cast<int>(shadowed.size()));
-      });
+    this->ScreenSpaceTimer.Start();
+    drawn = this->Screen->Update(s) && this->RenderScreenSpace(s) &&
+      this->Screen->Pack(static_cast<int>(shadowed.size()));
+    this->ScreenSpaceTimer.Stop();
   }
   if (!drawn)
   {
@@ -651,13 +597,9 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
   }
 
   // 4. Draw the scene with the shadow term in every receiver's shader.
-  timers.Time(vtkStepTimers::Receivers,
-    [&]
-    {
-      this->RenderReceivers(s, drawn && traits.ScreenSpace);
-      return true;
-    });
-  timers.Read(this->StepTimes);
+  this->ReceiversTimer.Start();
+  this->RenderReceivers(s, drawn && traits.ScreenSpace);
+  this->ReceiversTimer.Stop();
   vtkOpenGLCheckErrorMacro("failed after Render");
 }
 
@@ -1009,11 +951,9 @@ void vtkSoftShadowPass::ReleaseGraphicsResources(vtkWindow* w)
   this->Maps->ReleaseGraphicsResources(w);
   this->Screen->ReleaseGraphicsResources(w);
   this->Drawer->ReleaseGraphicsResources(w);
-  if (this->Timers)
-  {
-    this->Timers->ReleaseGraphicsResources();
-    this->Timers.reset();
-  }
+  this->LightSpaceTimer.ReleaseGraphicsResources();
+  this->ScreenSpaceTimer.ReleaseGraphicsResources();
+  this->ReceiversTimer.ReleaseGraphicsResources();
   if (this->DelegatePass)
   {
     this->DelegatePass->ReleaseGraphicsResources(w);

@@ -57,6 +57,7 @@
 
 #include "vtkNew.h" // for vtkNew
 #include "vtkOpenGLRenderPass.h"
+#include "vtkShadowGPUTimer.h"             // for vtkShadowGPUTimer
 #include "vtkSmartPointer.h"               // for vtkSmartPointer
 #include "vtkSoftShadowsRenderingModule.h" // for export macro
 
@@ -264,9 +265,9 @@ public:
    * technique alike by timer queries, which do not stall the frame; 0 where
    * the context has none, and before the second frame.
    */
-  double GetLightSpaceTime() const { return this->StepTimes[0]; }
-  double GetScreenSpaceTime() const { return this->StepTimes[1]; }
-  double GetReceiversTime() const { return this->StepTimes[2]; }
+  double GetLightSpaceTime() const { return this->LightSpaceTimer.GetMilliseconds(); }
+  double GetScreenSpaceTime() const { return this->ScreenSpaceTimer.GetMilliseconds(); }
+  double GetReceiversTime() const { return this->ReceiversTimer.GetMilliseconds(); }
   ///@}
 
   void Render(const vtkRenderState* s) override;
@@ -540,11 +541,11 @@ private:
   std::unique_ptr<vtkCameraStage> CameraStage;
   std::unique_ptr<vtkReceiverStage> ReceiverStage;
   std::vector<ReceiverTexture>
-    FrameReceiverTextures; ///< GetReceiverTextures() while receivers draw
-  Traits FrameTraits;      ///< GetTraits(), asked at the start of this frame
-  class vtkStepTimers;
-  std::unique_ptr<vtkStepTimers> Timers; ///< steps 2, 3 and 4; made in the first frame
-  std::array<double, 3> StepTimes{};     ///< ms, as the timers last completed
+    FrameReceiverTextures;            ///< GetReceiverTextures() while receivers draw
+  Traits FrameTraits;                 ///< GetTraits(), asked at the start of this frame
+  vtkShadowGPUTimer LightSpaceTimer;  ///< step 2
+  vtkShadowGPUTimer ScreenSpaceTimer; ///< step 3
+  vtkShadowGPUTimer ReceiversTimer;   ///< step 4
   bool LinearMaps = false;
   bool PointLightReported = false;
   bool UncombinedReported = false;

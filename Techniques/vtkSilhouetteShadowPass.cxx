@@ -7,7 +7,6 @@
 #include "vtkLight.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
-#include "vtkOpenGLRenderTimer.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
@@ -16,6 +15,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkShadowCasterRegistry.h"
 #include "vtkShadowDrawer.h"
+#include "vtkShadowGPUTimer.h"
 #include "vtkShadowGeometry.h"
 #include "vtkShadowMapManager.h"
 #include "vtkShadowScreenBuffers.h"
@@ -115,7 +115,7 @@ struct vtkSilhouetteShadowPass::Internals
   // Pass 2's shaders, [rectangles around edges][a cube face (no 2D depth
   // map to read)]: the vertex shader's with the common depths.
   std::array<std::array<std::string, 2>, 2> VertexShaders, FragmentShaders;
-  vtkOpenGLRenderTimer PassTimer; ///< pass 2, with MeasureSilhouettePass
+  vtkShadowGPUTimer PassTimer; ///< pass 2, with MeasureSilhouettePass
   Internals()
   {
     for (int bands = 0; bands < 2; ++bands)
@@ -237,7 +237,7 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
 
   if (this->MeasureSilhouettePass)
   {
-    this->Internal->PassTimer.ReusableStart();
+    this->Internal->PassTimer.Start();
   }
   auto& bands = this->Internal->Bands;
   bands.resize(lights.size());
@@ -384,9 +384,7 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
   }
   if (this->MeasureSilhouettePass)
   {
-    this->Internal->PassTimer.ReusableStop();
-    const double seconds = this->Internal->PassTimer.GetReusableElapsedSeconds();
-    this->SilhouettePassTime = seconds > 0.0 ? 1000.0 * seconds : this->SilhouettePassTime;
+    this->Internal->PassTimer.Stop();
   }
 
   this->TopologyAwareMeshBytes = 0;
@@ -471,6 +469,12 @@ void vtkSilhouetteShadowPass::SetVisibilityUniforms(vtkShaderProgram* program)
   const float texels[2] = { static_cast<float>(this->LookupTexels),
     static_cast<float>(this->Variant == Soft ? this->LookupRows : 1) };
   program->SetUniform2f("silhouetteLookupTexels", texels);
+}
+
+//------------------------------------------------------------------------------
+double vtkSilhouetteShadowPass::GetSilhouettePassTime()
+{
+  return this->Internal->PassTimer.GetMilliseconds();
 }
 
 //------------------------------------------------------------------------------

@@ -199,7 +199,7 @@ public:
    */
   vtkGetMacro(TopologyAwareMeshBytes, vtkIdType);
   vtkGetMacro(TopologyAwareMeshVertices, vtkIdType);
-  vtkGetMacro(SilhouettePassTime, double);
+  double GetSilhouettePassTime();
   vtkSetMacro(MeasureSilhouettePass, bool);
   vtkGetMacro(MeasureSilhouettePass, bool);
   vtkBooleanMacro(MeasureSilhouettePass, bool);
@@ -234,7 +234,6 @@ protected:
   bool MeasureSilhouettePass = false;
   vtkIdType TopologyAwareMeshBytes = 0;
   vtkIdType TopologyAwareMeshVertices = 0;
-  double SilhouettePassTime = 0.0;
 
 private:
   vtkSilhouetteShadowPass(const vtkSilhouetteShadowPass&) = delete;
