@@ -6,6 +6,7 @@
 void vtkShadowGPUTimer::Start()
 {
   this->Timer.ReusableStart();
+  this->Used = true;
 }
 
 //------------------------------------------------------------------------------

@@ -30,6 +30,8 @@ public:
   /// Ends the stretch, and reads the last one whose queries have completed.
   void Stop();
   double GetMilliseconds() const { return this->Milliseconds; }
+  /// Whether Start() was ever called: what times nothing reads no time.
+  bool IsUsed() const { return this->Used; }
 
   /// Frees the queries; the context must be current.
   void ReleaseGraphicsResources();
@@ -37,6 +39,7 @@ public:
 private:
   vtkOpenGLRenderTimer Timer;
   double Milliseconds = 0.0;
+  bool Used = false;
 };
 
 #endif

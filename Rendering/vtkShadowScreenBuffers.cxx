@@ -325,21 +325,43 @@ void vtkShadowScreenBuffers::CreateSamplers()
 }
 
 //------------------------------------------------------------------------------
-void vtkShadowScreenBuffers::BindRawDepth(vtkTextureObject* texture)
+//------------------------------------------------------------------------------
+vtkShadowScreenBuffers::Sampler::Sampler(
+  vtkShadowScreenBuffers* buffers, vtkTextureObject* texture, Reading reading)
+  : Texture(texture)
 {
-  this->CreateSamplers();
-  glBindSampler(texture->GetTextureUnit(), this->RawDepthSampler);
+  buffers->CreateSamplers();
+  texture->Activate();
+  glBindSampler(texture->GetTextureUnit(),
+    reading == Reading::RawDepth ? buffers->RawDepthSampler : buffers->BilinearSampler);
 }
 
-void vtkShadowScreenBuffers::BindBilinear(vtkTextureObject* texture)
+vtkShadowScreenBuffers::Sampler::Sampler(Sampler&& other) noexcept
+  : Texture(other.Texture)
 {
-  this->CreateSamplers();
-  glBindSampler(texture->GetTextureUnit(), this->BilinearSampler);
+  other.Texture = nullptr;
 }
 
-void vtkShadowScreenBuffers::UnbindSampler(int unit)
+vtkShadowScreenBuffers::Sampler::~Sampler()
 {
-  glBindSampler(unit, 0);
+  if (this->Texture)
+  {
+    glBindSampler(this->Texture->GetTextureUnit(), 0);
+    this->Texture->Deactivate();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkShadowScreenBuffers::Targets::Targets(vtkShadowScreenBuffers* buffers,
+  const std::vector<vtkTextureObject*>& colours, vtkTextureObject* depth, int width, int height)
+  : Buffers(buffers)
+{
+  buffers->BindTargets(colours, depth, width, height);
+}
+
+vtkShadowScreenBuffers::Targets::~Targets()
+{
+  this->Buffers->UnbindTargets();
 }
 
 //------------------------------------------------------------------------------
@@ -348,7 +370,7 @@ void vtkShadowScreenBuffers::BeginVisibility(int slot, float clear)
   vtkTextureObject* visibility = this->GetVisibility(slot);
   vtkOpenGLState* state = this->Context->GetState();
   state->PushFramebufferBindings();
-  this->BindTargets({ visibility });
+  this->BindTargets({ visibility }, nullptr, 0, 0);
   state->vtkglClearColor(clear, 0.0f, 0.0f, 0.0f);
   state->vtkglClear(GL_COLOR_BUFFER_BIT);
 }
@@ -403,14 +425,13 @@ bool vtkShadowScreenBuffers::Pack(int numberOfLights)
     {
       continue;
     }
-    this->BindTargets({ this->GetPacked(slot) });
+    Targets bound(this, { this->GetPacked(slot) });
     vtkTextureObject* visibility = this->Visibility[slot];
     visibility->Activate();
     this->DrawQuad(this->PackQuad.get(),
       [&](vtkShaderProgram* program)
       { program->SetUniformi("vtkShadowVisibility", visibility->GetTextureUnit()); });
     visibility->Deactivate();
-    this->UnbindTargets();
   }
   state->PopFramebufferBindings();
   return true;

@@ -118,33 +118,61 @@ public:
     const std::string& name, int components, int width = 0, int height = 0);
   void ReleaseTexture(const std::string& name);
 
-  ///@{
   /**
-   * Bind `colours` (and `depth`) as the targets of the next screen-space
-   * passes, over `width` x `height` (0: the buffers' size); UnbindTargets()
-   * detaches them. The caller pushes the framebuffer bindings (vtkOpenGLState)
-   * before its passes and pops them after.
+   * The targets of the next screen-space passes for as long as it lives:
+   * `colours` (and `depth`) over `width` x `height` (0: the buffers' size),
+   * detached when it goes. The caller pushes the framebuffer bindings
+   * (vtkOpenGLState) before its passes and pops them after.
+   *
+   *   {
+   *     vtkShadowScreenBuffers::Targets bound(screen, { texture });
+   *     screen->DrawQuad(...);
+   *   }
    */
-  void BindTargets(const std::vector<vtkTextureObject*>& colours, vtkTextureObject* depth = nullptr,
-    int width = 0, int height = 0);
-  void UnbindTargets();
-  ///@}
+  class VTKSOFTSHADOWSRENDERING_EXPORT Targets
+  {
+  public:
+    Targets(vtkShadowScreenBuffers* buffers, const std::vector<vtkTextureObject*>& colours,
+      vtkTextureObject* depth = nullptr, int width = 0, int height = 0);
+    ~Targets();
+    Targets(const Targets&) = delete;
+    Targets& operator=(const Targets&) = delete;
+
+  private:
+    vtkShadowScreenBuffers* Buffers;
+  };
 
   /// Colour targets one pass can write (GL_MAX_DRAW_BUFFERS, at most 8).
   int GetMaximumTargets();
 
-  ///@{
-  /**
-   * Sampler objects (OpenGL 3.3) for an activated texture: a depth map read
-   * as raw depths (no comparison, nearest), or a screen texture read with
-   * bilinear filtering; UnbindSampler() restores the texture's own. False
-   * when the context has no sampler objects.
-   */
+  /// Whether the context has sampler objects (OpenGL 3.3), which Sampler needs.
   bool SupportsSamplers() const;
-  void BindRawDepth(vtkTextureObject* texture);
-  void BindBilinear(vtkTextureObject* texture);
-  void UnbindSampler(int unit);
-  ///@}
+
+  /**
+   * A texture activated and read through one of the framework's sampler
+   * objects for as long as it lives: a depth map as raw depths (no
+   * comparison, nearest), or a screen texture with bilinear filtering. When
+   * it goes, the texture's own sampling is back and it is deactivated.
+   * Movable, so that a vector can hold one per light.
+   */
+  class VTKSOFTSHADOWSRENDERING_EXPORT Sampler
+  {
+  public:
+    enum class Reading
+    {
+      RawDepth,
+      Bilinear
+    };
+    Sampler(vtkShadowScreenBuffers* buffers, vtkTextureObject* texture, Reading reading);
+    ~Sampler();
+    Sampler(Sampler&& other) noexcept;
+    Sampler(const Sampler&) = delete;
+    Sampler& operator=(const Sampler&) = delete;
+    Sampler& operator=(Sampler&&) = delete;
+
+  private:
+    vtkTextureObject* Texture;
+  };
 
   /**
    * World size of one of the buffers' pixels on a surface at camera distance
@@ -189,6 +217,9 @@ public:
 
 private:
   void CreateSamplers();
+  void BindTargets(
+    const std::vector<vtkTextureObject*>& colours, vtkTextureObject* depth, int width, int height);
+  void UnbindTargets();
 
   /// What a light's receivers' texture comes from this frame.
   enum class Written

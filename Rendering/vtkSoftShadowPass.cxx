@@ -131,8 +131,8 @@ public:
     std::string dec, impl;
     if (this->Targets > 0 && sources.IsLit())
     {
-      dec = std::string(vtkShadowSurfaceFS) + "\n" + this->Pass->GetCameraPassDeclarations();
-      impl = SurfaceCode(sources.Fragment) + this->Pass->GetCameraPassImplementation();
+      dec = std::string(vtkShadowSurfaceFS) + "\n" + this->Code->Declarations;
+      impl = SurfaceCode(sources.Fragment) + this->Code->Implementation;
     }
     else
     {
@@ -152,9 +152,14 @@ public:
     if (program->IsUniformUsed("vtkShadowViewToWorld"))
     {
       SetViewToWorld(program, this->Pass->Maps->GetRenderer());
-      this->Pass->SetCameraPassUniforms(program);
+      if (this->Code->Uniforms)
+      {
+        this->Code->Uniforms(program);
+      }
     }
   }
+
+  const CameraPassCode* Code = nullptr; ///< RenderCameraDepth()'s, while it draws
 
 private:
   vtkSoftShadowPass* Pass;
@@ -265,11 +270,11 @@ void vtkSoftShadowPass::vtkReceiverStage::PostReplace(vtkShadowShaderSources& so
     }
     dec << vtkShadowSurfaceFS << "\n"
         << vtkSoftShadowPass::GetLightSpaceLookupCode() << vtkSoftShadowReceiverFS << "\n";
-    for (const auto& texture : pass->FrameReceiverTextures)
+    for (const auto& texture : pass->FrameReceiverCode.Textures)
     {
       dec << "uniform " << texture.Sampler << " " << texture.Name << ";\n";
     }
-    dec << pass->GetVisibilityDeclarations() << "\n";
+    dec << pass->FrameReceiverCode.Declarations << "\n";
     const ReceiverShading shading = pass->GetReceiverShading(sources);
     dec << shading.FragmentDeclarations << "\n";
     vtkShaderProgram::Substitute(
@@ -286,8 +291,9 @@ void vtkSoftShadowPass::vtkReceiverStage::PostReplace(vtkShadowShaderSources& so
     {
       const int n = lights[slot].ShaderIndex;
       const int i = static_cast<int>(slot);
-      impl << "  float vtkShadowVisibility" << n << " = " << pass->GetVisibilityExpression(i)
-           << ";\n"
+      const auto& visibility = pass->FrameReceiverCode.Visibility;
+      impl << "  float vtkShadowVisibility" << n << " = "
+           << (visibility ? visibility(i) : pass->GetDefaultVisibility(i)) << ";\n"
            << "  float vtkShadowFactor" << n << " = mix(1.0, vtkShadowVisibility" << n
            << ", vtkShadowAttenuation[" << i << "]);\n";
       if (!vtkShadowMapperCode::ScaleLight(fragmentShader, n, "vtkShadowFactor" + std::to_string(n),
@@ -338,7 +344,7 @@ void vtkSoftShadowPass::vtkReceiverStage::SetUniforms(vtkShaderProgram* program,
   // vtkShadowViewToWorld unused.
   bool receiver = program->IsUniformUsed("vtkShadowViewToWorld") ||
     program->IsUniformUsed("vtkShadowAttenuation[0]");
-  for (const auto& texture : pass->FrameReceiverTextures)
+  for (const auto& texture : pass->FrameReceiverCode.Textures)
   {
     receiver = receiver || program->IsUniformUsed(texture.Name.c_str());
   }
@@ -380,11 +386,14 @@ void vtkSoftShadowPass::vtkReceiverStage::SetUniforms(vtkShaderProgram* program,
   {
     pass->Screen->SetUniforms(program, static_cast<int>(lights.size()));
   }
-  for (const auto& texture : pass->FrameReceiverTextures)
+  for (const auto& texture : pass->FrameReceiverCode.Textures)
   {
     program->SetUniformi(texture.Name.c_str(), texture.Texture->GetTextureUnit());
   }
-  pass->SetVisibilityUniforms(program);
+  if (pass->FrameReceiverCode.Uniforms)
+  {
+    pass->FrameReceiverCode.Uniforms(program);
+  }
   pass->SetReceiverShadingUniforms(program, prop);
 }
 
@@ -618,12 +627,8 @@ void vtkSoftShadowPass::RenderReceivers(const vtkRenderState* s, bool screenSpac
   {
     this->Screen->ActivateTextures();
   }
-  this->FrameReceiverTextures.clear();
-  if (!shadowed.empty())
-  {
-    this->FrameReceiverTextures = this->GetReceiverTextures();
-  }
-  for (auto& texture : this->FrameReceiverTextures)
+  this->FrameReceiverCode = shadowed.empty() ? ReceiverCode() : this->GetReceiverCode();
+  for (auto& texture : this->FrameReceiverCode.Textures)
   {
     texture.Texture->Activate();
   }
@@ -670,7 +675,7 @@ void vtkSoftShadowPass::RenderReceivers(const vtkRenderState* s, bool screenSpac
     steps->SetOpaquePass(opaque);
   }
 
-  for (auto& texture : this->FrameReceiverTextures)
+  for (auto& texture : this->FrameReceiverCode.Textures)
   {
     texture.Texture->Deactivate();
   }
@@ -810,8 +815,8 @@ bool vtkSoftShadowPass::RenderLightDepthMaps(const vtkRenderState* s, bool linea
 }
 
 //------------------------------------------------------------------------------
-bool vtkSoftShadowPass::RenderCameraDepth(
-  const vtkRenderState* s, const std::vector<vtkTextureObject*>& targets)
+bool vtkSoftShadowPass::RenderCameraDepth(const vtkRenderState* s,
+  const std::vector<vtkTextureObject*>& targets, const CameraPassCode& code)
 {
   if (!targets.empty())
   {
@@ -826,7 +831,10 @@ bool vtkSoftShadowPass::RenderCameraDepth(
   setup.Colours = targets;
   setup.Draw = vtkShadowDrawSetup::Props::Camera;
   setup.Stage = this->CameraStage.get();
-  return setup.Depth && this->Drawer->Draw(s, setup);
+  this->CameraStage->Code = &code;
+  const bool drawn = setup.Depth && this->Drawer->Draw(s, setup);
+  this->CameraStage->Code = nullptr;
+  return drawn;
 }
 
 //------------------------------------------------------------------------------
@@ -900,7 +908,7 @@ bool vtkSoftShadowPass::IsFirstPointLight(int slot) const
 }
 
 //------------------------------------------------------------------------------
-std::string vtkSoftShadowPass::GetVisibilityExpression(int slot)
+std::string vtkSoftShadowPass::GetDefaultVisibility(int slot) const
 {
   const auto& light = this->Maps->GetLights()[slot];
   const std::string i = std::to_string(slot);
@@ -954,6 +962,7 @@ void vtkSoftShadowPass::ReleaseGraphicsResources(vtkWindow* w)
   this->LightSpaceTimer.ReleaseGraphicsResources();
   this->ScreenSpaceTimer.ReleaseGraphicsResources();
   this->ReceiversTimer.ReleaseGraphicsResources();
+  this->TechniqueTimer.ReleaseGraphicsResources();
   if (this->DelegatePass)
   {
     this->DelegatePass->ReleaseGraphicsResources(w);

@@ -20,7 +20,7 @@
  *  4. the scene is drawn through the DelegatePass (opaque, translucent,
  *     volumes, overlay) while the receiver stage, reached by every
  *     vtkOpenGLPolyDataMapper's shader hooks, injects `vtkShadowFactorN`
- *     (GetVisibilityExpression()) and scales light N's diffuse and specular
+ *     (GetReceiverCode()) and scales light N's diffuse and specular
  *     (Phong) or radiance (PBR) with it.
  *
  * docs/architecture.md walks through writing a technique.
@@ -61,10 +61,11 @@
 #include "vtkSmartPointer.h"               // for vtkSmartPointer
 #include "vtkSoftShadowsRenderingModule.h" // for export macro
 
-#include <array>  // for std::array
-#include <memory> // for std::unique_ptr
-#include <string> // for std::string
-#include <vector> // for std::vector
+#include <array>      // for std::array
+#include <functional> // for std::function
+#include <memory>     // for std::unique_ptr
+#include <string>     // for std::string
+#include <vector>     // for std::vector
 
 class vtkInformationDoubleKey;
 class vtkLight;
@@ -255,6 +256,14 @@ public:
    */
   int GetMaximumNumberOfShadowedLights(bool pointLights) const;
 
+  /**
+   * Whether the technique's receivers read screen-space buffers of the
+   * viewport's size (Traits::ScreenSpace: contact, reference, aliasfree):
+   * passes that draw the scene larger than the viewport, or away from its
+   * corner, cannot wrap such a technique.
+   */
+  bool GetUsesScreenSpace() const { return this->GetTraits().ScreenSpace; }
+
   ///@{
   /**
    * GPU time in milliseconds of each step of the last frame whose timer
@@ -268,6 +277,20 @@ public:
   double GetLightSpaceTime() const { return this->LightSpaceTimer.GetMilliseconds(); }
   double GetScreenSpaceTime() const { return this->ScreenSpaceTimer.GetMilliseconds(); }
   double GetReceiversTime() const { return this->ReceiversTimer.GetMilliseconds(); }
+  ///@}
+
+  ///@{
+  /**
+   * The technique's own work beside those steps, in milliseconds, for
+   * techniques that time it (negative for the others): on the CPU in the
+   * last frame (smoothies: its silhouette searches and edge lists), and on
+   * the GPU as the steps are (silhouette: its pass 2).
+   */
+  double GetTechniqueCPUTime() const { return this->TechniqueCPUTime; }
+  double GetTechniqueGPUTime() const
+  {
+    return this->TechniqueTimer.IsUsed() ? this->TechniqueTimer.GetMilliseconds() : -1.0;
+  }
   ///@}
 
   void Render(const vtkRenderState* s) override;
@@ -382,43 +405,67 @@ protected:
    */
   virtual bool RenderScreenSpace(const vtkRenderState*) { return true; }
   /**
+   * A technique's code in the camera pass: GLSL declarations, statements
+   * that see `vtkShadowPositionWC` (vec4), `vtkShadowNormalWC` (the face's
+   * unit normal, towards the camera) and `vtkShadowFaceDefined` and write
+   * every target, and the uniforms they need (may be unset).
+   */
+  struct CameraPassCode
+  {
+    std::string Declarations;
+    std::string Implementation;
+    std::function<void(vtkShaderProgram*)> Uniforms;
+  };
+
+  /**
    * Helper for RenderScreenSpace(): draw the camera depth of the opaque props
    * into this->Screen. With `targets` (textures of this->Screen's size), each
-   * fragment the camera sees also runs GetCameraPassImplementation(), which
-   * writes gl_FragData[0 .. targets - 1]: per-pixel work done with the
-   * geometry's own position and normal instead of a full-screen pass
-   * rebuilding them from depth. Targets are cleared to 0 first; unlit
-   * fragments (no view-space position in the mapper) write 0.
+   * fragment the camera sees also runs `code`, which writes
+   * gl_FragData[0 .. targets - 1]: per-pixel work done with the geometry's
+   * own position and normal instead of a full-screen pass rebuilding them
+   * from depth. Targets are cleared to 0 first; unlit fragments (no
+   * view-space position in the mapper) write 0.
    */
-  bool RenderCameraDepth(
-    const vtkRenderState* s, const std::vector<vtkTextureObject*>& targets = {});
+  bool RenderCameraDepth(const vtkRenderState* s,
+    const std::vector<vtkTextureObject*>& targets = {}, const CameraPassCode& code = {});
 
-  ///@{
-  /**
-   * The camera pass's code: declarations, and statements that see
-   * `vtkShadowPositionWC` (vec4) and `vtkShadowNormalWC` (the face's unit
-   * normal, towards the camera) and write every target; then the uniforms
-   * they need. Default: none.
-   */
-  virtual std::string GetCameraPassDeclarations() { return std::string(); }
-  virtual std::string GetCameraPassImplementation() { return std::string(); }
-  virtual void SetCameraPassUniforms(vtkShaderProgram*) {}
-  ///@}
+  /// A texture the receivers read: the framework declares it (`uniform
+  /// <Sampler> <Name>;`), binds it while they draw and sets its unit.
+  struct ReceiverTexture
+  {
+    std::string Name;
+    std::string Sampler; ///< e.g. "sampler2D"
+    vtkTextureObject* Texture;
+  };
 
   /**
-   * GLSL declarations the technique adds to receivers' fragment shaders,
-   * after the framework's own (vtkSoftShadowReceiverFS.glsl). Default: none.
+   * What a technique adds to receivers' fragment shaders: GLSL declarations
+   * after the framework's own (vtkSoftShadowReceiverFS.glsl); the expression
+   * of shadowed light `slot`'s visibility (1 lit, 0 umbra) at
+   * `vtkShadowPositionWC` (unset: GetDefaultVisibility()); the textures they
+   * read, per light (e.g. vtkShadowMapManager::Light::Textures) or per frame,
+   * with names that differ; and the technique's uniforms (may be unset).
    */
-  virtual std::string GetVisibilityDeclarations() { return std::string(); }
+  struct ReceiverCode
+  {
+    std::string Declarations;
+    std::function<std::string(int slot)> Visibility;
+    std::vector<ReceiverTexture> Textures;
+    std::function<void(vtkShaderProgram*)> Uniforms;
+  };
+
+  /// The technique's receiver code, asked once a frame before receivers
+  /// draw. Default: none, each light's GetDefaultVisibility().
+  virtual ReceiverCode GetReceiverCode() { return {}; }
 
   /**
-   * GLSL expression for the visibility (1 lit, 0 umbra) of shadowed light
-   * `slot` at `vtkShadowPositionWC`. Default: the framework's hard lookup in
-   * the light's depth map with GetPCFRadius(), or, for ScreenSpace traits,
-   * the light's screen-space visibility texture, upsampled, where it holds a
-   * value for the fragment's surface, and that hard lookup elsewhere.
+   * The framework's visibility expression for shadowed light `slot`: the
+   * hard lookup in the light's depth map with GetPCFRadius(), or, for
+   * ScreenSpace traits, the light's screen-space visibility texture,
+   * upsampled, where it holds a value for the fragment's surface, and that
+   * hard lookup elsewhere.
    */
-  virtual std::string GetVisibilityExpression(int slot);
+  std::string GetDefaultVisibility(int slot) const;
 
   /**
    * GLSL expression for the framework's hard lookup of shadowed light
@@ -443,27 +490,6 @@ protected:
    * and techniques' own loops).
    */
   bool IsFirstPointLight(int slot) const;
-
-  /**
-   * Upload the technique's own uniforms to a receiver's program.
-   */
-  virtual void SetVisibilityUniforms(vtkShaderProgram*) {}
-
-  /// A texture the receivers read: the framework declares it (`uniform
-  /// <Sampler> <Name>;`), binds it while they draw and sets its unit.
-  struct ReceiverTexture
-  {
-    std::string Name;
-    std::string Sampler; ///< e.g. "sampler2D"
-    vtkTextureObject* Texture;
-  };
-
-  /**
-   * The technique's textures for this frame's receivers, per light (e.g.
-   * from vtkShadowMapManager::Light::Textures) or per frame; their names must
-   * differ. Default: none.
-   */
-  virtual std::vector<ReceiverTexture> GetReceiverTextures() { return {}; }
 
   /// What a technique changes in a receiver's shading besides the shadow
   /// (e.g. bent normals): code for the vertex shader (declarations; and
@@ -529,6 +555,12 @@ protected:
   std::unique_ptr<vtkShadowDrawer> Drawer;
   std::unique_ptr<vtkShadowDepthStage> DepthStage; ///< light space
 
+  /// A technique timing its own work starts and stops this timer around it
+  /// every frame, and stores its CPU work's milliseconds in TechniqueCPUTime
+  /// (GetTechniqueGPUTime(), GetTechniqueCPUTime()).
+  vtkShadowGPUTimer TechniqueTimer;
+  double TechniqueCPUTime = -1.0;
+
 private:
   vtkSoftShadowPass(const vtkSoftShadowPass&) = delete;
   void operator=(const vtkSoftShadowPass&) = delete;
@@ -540,8 +572,7 @@ private:
   std::unique_ptr<vtkShadowDistanceStage> DistanceStage;
   std::unique_ptr<vtkCameraStage> CameraStage;
   std::unique_ptr<vtkReceiverStage> ReceiverStage;
-  std::vector<ReceiverTexture>
-    FrameReceiverTextures;            ///< GetReceiverTextures() while receivers draw
+  ReceiverCode FrameReceiverCode;     ///< GetReceiverCode() while receivers draw
   Traits FrameTraits;                 ///< GetTraits(), asked at the start of this frame
   vtkShadowGPUTimer LightSpaceTimer;  ///< step 2
   vtkShadowGPUTimer ScreenSpaceTimer; ///< step 3

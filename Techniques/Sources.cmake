@@ -18,7 +18,18 @@ set(softshadows_techniques_classes
 set(softshadows_techniques_private_classes
   vtkAliasFreeBentNormals)
 set(softshadows_techniques_private_headers
-  vtkShadowSampling.h)
+  vtkShadowSampling.h
+  vtkShadowTechniqueCatalogInternals.h)
+
+# Each technique's entry in the catalog: its variants and parameters.
+set(softshadows_techniques_catalog_sources
+  catalog/aliasfree.cxx
+  catalog/contact.cxx
+  catalog/hard.cxx
+  catalog/omni.cxx
+  catalog/reference.cxx
+  catalog/silhouette.cxx
+  catalog/smoothies.cxx)
 
 # Each technique's shaders, in a folder named as the technique.
 set(softshadows_techniques_shaders

@@ -384,39 +384,6 @@ bool vtkAliasFreeShadowPass::RenderShadowMaps(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-std::vector<vtkSoftShadowPass::ReceiverTexture> vtkAliasFreeShadowPass::GetReceiverTextures()
-{
-  std::vector<ReceiverTexture> textures;
-  const auto& lights = this->Maps->GetLights();
-  for (size_t slot = 0; this->Internal->BeyondFaces && slot < lights.size(); ++slot)
-  {
-    textures.push_back({ "aliasfreeBeyondFaces" + std::to_string(slot),
-      lights[slot].Point ? "samplerCube" : "sampler2DShadow", lights[slot].Textures[0] });
-  }
-  return textures;
-}
-
-//------------------------------------------------------------------------------
-std::string vtkAliasFreeShadowPass::GetVisibilityExpression(int slot)
-{
-  const std::string exact = this->Superclass::GetVisibilityExpression(slot);
-  if (!this->Internal->BeyondFaces)
-  {
-    return exact;
-  }
-  const std::string beyond =
-    this->GetHardLookupExpression(slot, "aliasfreeBeyondFaces" + std::to_string(slot));
-  return "min(" + exact + ", " + beyond + ")";
-}
-
-//------------------------------------------------------------------------------
-std::string vtkAliasFreeShadowPass::GetCameraPassImplementation()
-{
-  return "  gl_FragData[0] = vec4(vtkShadowPositionWC.xyz / vtkShadowPositionWC.w, 1.0);\n"
-         "  gl_FragData[1] = vec4(vtkShadowNormalWC, vtkShadowFaceDefined ? 1.0 : 0.0);\n";
-}
-
-//------------------------------------------------------------------------------
 bool vtkAliasFreeShadowPass::RenderScreenSpace(const vtkRenderState* s)
 {
   auto* context = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
@@ -472,7 +439,12 @@ bool vtkAliasFreeShadowPass::RenderScreenSpace(const vtkRenderState* s)
 
   vtkTextureObject* positions = this->Screen->GetTexture("aliasfree.positions", 4);
   vtkTextureObject* normals = this->Screen->GetTexture("aliasfree.normals", 4);
-  if (!this->RenderCameraDepth(s, { positions, normals }))
+  // Each pixel's surface: its position, and its face's normal where it has one.
+  CameraPassCode code;
+  code.Implementation =
+    "  gl_FragData[0] = vec4(vtkShadowPositionWC.xyz / vtkShadowPositionWC.w, 1.0);\n"
+    "  gl_FragData[1] = vec4(vtkShadowNormalWC, vtkShadowFaceDefined ? 1.0 : 0.0);\n";
+  if (!this->RenderCameraDepth(s, { positions, normals }, code))
   {
     return false;
   }
@@ -1021,6 +993,31 @@ void vtkAliasFreeShadowPass::ReleaseGraphicsResources(vtkWindow* w)
     in.Target = nullptr;
   }
   in.Failed = false;
+}
+
+//------------------------------------------------------------------------------
+vtkSoftShadowPass::ReceiverCode vtkAliasFreeShadowPass::GetReceiverCode()
+{
+  // The exact visibility of the faces, and with props that draw more than
+  // faces the lesser of it and their map's hard shadow (GetDepthMapProps()).
+  ReceiverCode code;
+  if (!this->Internal->BeyondFaces)
+  {
+    return code;
+  }
+  const auto& lights = this->Maps->GetLights();
+  for (size_t slot = 0; slot < lights.size(); ++slot)
+  {
+    code.Textures.push_back({ "aliasfreeBeyondFaces" + std::to_string(slot),
+      lights[slot].Point ? "samplerCube" : "sampler2DShadow", lights[slot].Textures[0] });
+  }
+  code.Visibility = [this](int slot)
+  {
+    const std::string beyond =
+      this->GetHardLookupExpression(slot, "aliasfreeBeyondFaces" + std::to_string(slot));
+    return "min(" + this->GetDefaultVisibility(slot) + ", " + beyond + ")";
+  };
+  return code;
 }
 
 //------------------------------------------------------------------------------

@@ -212,12 +212,10 @@ protected:
   bool RenderShadowMaps(const vtkRenderState* s) override;
   bool RenderScreenSpace(const vtkRenderState* s) override;
   Traits GetTraits() const override;
-  std::string GetCameraPassImplementation() override;
+  ReceiverCode GetReceiverCode() override;
   ReceiverShading GetReceiverShading(const vtkShadowShaderSources& sources) override;
   void SetReceiverShadingUniforms(vtkShaderProgram* program, vtkProp* prop) override;
   void ReceiversDrawn() override;
-  std::vector<ReceiverTexture> GetReceiverTextures() override;
-  std::string GetVisibilityExpression(int slot) override;
 
   int Variant = Soft;
   int NumberOfLightSamples = 256;

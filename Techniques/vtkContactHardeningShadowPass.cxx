@@ -271,36 +271,41 @@ bool vtkContactHardeningShadowPass::RenderDistanceMaps(
   const auto& lights = this->Maps->GetLights();
   in.CameraPassFirst = first;
   in.CameraPassUnits.clear();
+  // 2D maps are read through the non-comparing sampler; cube maps hold
+  // distances already.
+  std::vector<vtkShadowScreenBuffers::Sampler> maps;
+  maps.reserve(count);
   for (size_t k = 0; k < count; ++k)
   {
-    // 2D maps are read through the non-comparing sampler; cube maps hold
-    // distances already.
     const auto& light = lights[first + k];
-    vtkTextureObject* map = light.Point ? light.CubeMap : light.DepthMap;
-    map->Activate();
-    in.CameraPassUnits.push_back(map->GetTextureUnit());
-    if (!light.Point)
+    if (light.Point)
     {
-      this->Screen->BindRawDepth(map);
+      light.CubeMap->Activate();
     }
+    else
+    {
+      maps.emplace_back(
+        this->Screen.get(), light.DepthMap, vtkShadowScreenBuffers::Sampler::Reading::RawDepth);
+    }
+    in.CameraPassUnits.push_back((light.Point ? light.CubeMap : light.DepthMap)->GetTextureUnit());
   }
-  const bool ok = this->RenderCameraDepth(s, targets);
+  const bool ok = this->RenderCameraDepth(s, targets,
+    { this->DistanceMapDeclarations(), this->DistanceMapImplementation(),
+      [this](vtkShaderProgram* program) { this->SetDistanceMapUniforms(program); } });
+  maps.clear();
   for (size_t k = 0; k < count; ++k)
   {
-    const auto& light = lights[first + k];
-    vtkTextureObject* map = light.Point ? light.CubeMap : light.DepthMap;
-    if (!light.Point)
+    if (lights[first + k].Point)
     {
-      this->Screen->UnbindSampler(map->GetTextureUnit());
+      lights[first + k].CubeMap->Deactivate();
     }
-    map->Deactivate();
   }
   in.CameraPassUnits.clear();
   return ok;
 }
 
 //------------------------------------------------------------------------------
-std::string vtkContactHardeningShadowPass::GetCameraPassDeclarations()
+std::string vtkContactHardeningShadowPass::DistanceMapDeclarations() const
 {
   const vtkInternals& in = *this->Internals;
   const auto& lights = this->Maps->GetLights();
@@ -337,7 +342,7 @@ std::string vtkContactHardeningShadowPass::GetCameraPassDeclarations()
 }
 
 //------------------------------------------------------------------------------
-std::string vtkContactHardeningShadowPass::GetCameraPassImplementation()
+std::string vtkContactHardeningShadowPass::DistanceMapImplementation() const
 {
   const vtkInternals& in = *this->Internals;
   const auto& lights = this->Maps->GetLights();
@@ -364,7 +369,7 @@ std::string vtkContactHardeningShadowPass::GetCameraPassImplementation()
 }
 
 //------------------------------------------------------------------------------
-void vtkContactHardeningShadowPass::SetCameraPassUniforms(vtkShaderProgram* program)
+void vtkContactHardeningShadowPass::SetDistanceMapUniforms(vtkShaderProgram* program)
 {
   const vtkInternals& in = *this->Internals;
   const auto& lights = this->Maps->GetLights();
@@ -427,31 +432,33 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
   state->PushFramebufferBindings();
   // Which tiles the early-out's and the dilation's neighbourhoods find all
   // shadowed, or partly shadowed.
-  screen->BindTargets({ tiles[0] }, nullptr, tilesW, tilesH);
-  int bilinearUnit = -1;
-  in.Draw(
-    screen, in.Tiles, distance,
-    [&](vtkShaderProgram* program)
-    {
-      bilinearUnit = distance->GetTextureUnit();
-      screen->BindBilinear(distance);
-      program->SetUniformi("contactTileSize", TileSize);
-    },
-    tolerance, this->DebugView);
-  screen->UnbindSampler(bilinearUnit);
-  screen->UnbindTargets();
-  screen->BindTargets({ tiles[1] }, nullptr, tilesW, tilesH);
-  in.Draw(
-    screen, in.TileSpread, tiles[0],
-    [&](vtkShaderProgram* program)
-    {
-      const int earlyOutReach = this->EarlyOutKernelSize / 2;
-      const int dilationReach = (this->DilationSize + 1) / 2;
-      program->SetUniformi("contactEarlyOutTiles", (earlyOutReach + TileSize - 1) / TileSize);
-      program->SetUniformi("contactDilationTiles", (dilationReach + TileSize - 1) / TileSize);
-    },
-    tolerance, this->DebugView);
-  screen->UnbindTargets();
+  using Targets = vtkShadowScreenBuffers::Targets;
+  {
+    Targets bound(screen, { tiles[0] }, nullptr, tilesW, tilesH);
+    vtkShadowScreenBuffers::Sampler bilinear(
+      screen, distance, vtkShadowScreenBuffers::Sampler::Reading::Bilinear);
+    in.Draw(
+      screen, in.Tiles, nullptr,
+      [&](vtkShaderProgram* program)
+      {
+        program->SetUniformi("contactMap", distance->GetTextureUnit());
+        program->SetUniformi("contactTileSize", TileSize);
+      },
+      tolerance, this->DebugView);
+  }
+  {
+    Targets bound(screen, { tiles[1] }, nullptr, tilesW, tilesH);
+    in.Draw(
+      screen, in.TileSpread, tiles[0],
+      [&](vtkShaderProgram* program)
+      {
+        const int earlyOutReach = this->EarlyOutKernelSize / 2;
+        const int dilationReach = (this->DilationSize + 1) / 2;
+        program->SetUniformi("contactEarlyOutTiles", (earlyOutReach + TileSize - 1) / TileSize);
+        program->SetUniformi("contactDilationTiles", (dilationReach + TileSize - 1) / TileSize);
+      },
+      tolerance, this->DebugView);
+  }
 
   // The ping-pong pair: the prepare pass's target and the distance map,
   // which holds the final value of every pixel no blur touches. The
@@ -478,43 +485,43 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
   auto toPacked = [&](std::unique_ptr<vtkOpenGLQuadHelper>& quad, vtkTextureObject* input,
                     const std::function<void(vtkShaderProgram*)>& uniforms, bool masked = false)
   {
-    screen->BindTargets({ packed }, masked ? mask : nullptr);
+    Targets bound(screen, { packed }, masked ? mask : nullptr);
     in.Draw(screen, quad, input, uniforms, tolerance, this->DebugView,
       masked ? vtkShadowScreenBuffers::QuadMask::Test : vtkShadowScreenBuffers::QuadMask::None,
       1.0f);
-    screen->UnbindTargets();
   };
 
   // Umbra early-out and pass 3.
-  screen->BindTargets(chainTargets(pair[0]), mask);
-  tiles[1]->Activate();
-  in.Draw(
-    screen, in.Prepare, distance,
-    [&](vtkShaderProgram* program)
-    {
-      program->SetUniformi("contactTiles", tiles[1]->GetTextureUnit());
-      program->SetUniformi("contactTileSize", TileSize);
-      program->SetUniformi("contactEarlyOut", this->UmbraEarlyOut ? 1 : 0);
-      program->SetUniformi("contactDilation", this->Dilation ? 1 : 0);
-      // D counts passes (a fraction blends the last in) or kernel pixels.
-      program->SetUniformf("contactSmallestD", this->Variant == MultiPass ? 0.01f : 1.5f);
-      if (this->RefineUnresolved) // CONTACT_WIDTHS
+  {
+    Targets bound(screen, chainTargets(pair[0]), mask);
+    tiles[1]->Activate();
+    in.Draw(
+      screen, in.Prepare, distance,
+      [&](vtkShaderProgram* program)
       {
-        program->SetUniformi("contactCountsPasses", this->Variant == MultiPass ? 1 : 0);
-        program->SetUniformi("contactMaximumKernel", this->MaximumKernelSize);
-        // Summed variances of 0 .. 64 passes (those past the limit add none).
-        std::vector<float> variances(in.PassStarts);
-        variances.push_back(in.PassStarts.back() + 1.0f / in.PassInverseVariances.back());
-        variances.resize(65, variances.back());
-        program->SetUniform1fv("contactPassVariances", 65, variances.data());
-      }
-      const std::vector<float> dilationTaps = ScaledTaps(taps, this->DilationSize);
-      program->SetUniform3fv("contactTaps", this->PoissonTaps, dilationTaps.data());
-      program->SetUniformi("contactTapCount", this->PoissonTaps);
-    },
-    tolerance, this->DebugView, vtkShadowScreenBuffers::QuadMask::Write);
-  tiles[1]->Deactivate();
-  screen->UnbindTargets();
+        program->SetUniformi("contactTiles", tiles[1]->GetTextureUnit());
+        program->SetUniformi("contactTileSize", TileSize);
+        program->SetUniformi("contactEarlyOut", this->UmbraEarlyOut ? 1 : 0);
+        program->SetUniformi("contactDilation", this->Dilation ? 1 : 0);
+        // D counts passes (a fraction blends the last in) or kernel pixels.
+        program->SetUniformf("contactSmallestD", this->Variant == MultiPass ? 0.01f : 1.5f);
+        if (this->RefineUnresolved) // CONTACT_WIDTHS
+        {
+          program->SetUniformi("contactCountsPasses", this->Variant == MultiPass ? 1 : 0);
+          program->SetUniformi("contactMaximumKernel", this->MaximumKernelSize);
+          // Summed variances of 0 .. 64 passes (those past the limit add none).
+          std::vector<float> variances(in.PassStarts);
+          variances.push_back(in.PassStarts.back() + 1.0f / in.PassInverseVariances.back());
+          variances.resize(65, variances.back());
+          program->SetUniform1fv("contactPassVariances", 65, variances.data());
+        }
+        const std::vector<float> dilationTaps = ScaledTaps(taps, this->DilationSize);
+        program->SetUniform3fv("contactTaps", this->PoissonTaps, dilationTaps.data());
+        program->SetUniformi("contactTapCount", this->PoissonTaps);
+      },
+      tolerance, this->DebugView, vtkShadowScreenBuffers::QuadMask::Write);
+    tiles[1]->Deactivate();
+  }
 
   // Pass 4, then pass 5's visibility.
   if (this->Variant == MultiPass)
@@ -538,20 +545,21 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
         glBeginConditionalRender(in.Queries[(pass - 1) % 2], GL_QUERY_WAIT);
       }
       glBeginQuery(GL_SAMPLES_PASSED, in.Queries[pass % 2]);
-      screen->BindTargets(chainTargets(pair[(pass + 1) % 2]), mask);
-      in.Draw(
-        screen, in.MultiPass, pair[pass % 2],
-        [&](vtkShaderProgram* program)
-        {
-          // Unrounded: the shader scales and rounds them.
-          const std::vector<float> passTaps = ScaledTaps(taps, size, false);
-          program->SetUniform3fv("contactTaps", this->PoissonTaps, passTaps.data());
-          program->SetUniformi("contactTapCount", this->PoissonTaps);
-          program->SetUniformf("contactKernelSize", static_cast<float>(size));
-        },
-        tolerance, this->DebugView, vtkShadowScreenBuffers::QuadMask::Test,
-        1.0f - static_cast<float>(pass) / 256.0f);
-      screen->UnbindTargets();
+      {
+        Targets bound(screen, chainTargets(pair[(pass + 1) % 2]), mask);
+        in.Draw(
+          screen, in.MultiPass, pair[pass % 2],
+          [&](vtkShaderProgram* program)
+          {
+            // Unrounded: the shader scales and rounds them.
+            const std::vector<float> passTaps = ScaledTaps(taps, size, false);
+            program->SetUniform3fv("contactTaps", this->PoissonTaps, passTaps.data());
+            program->SetUniformi("contactTapCount", this->PoissonTaps);
+            program->SetUniformf("contactKernelSize", static_cast<float>(size));
+          },
+          tolerance, this->DebugView, vtkShadowScreenBuffers::QuadMask::Test,
+          1.0f - static_cast<float>(pass) / 256.0f);
+      }
       glEndQuery(GL_SAMPLES_PASSED);
       if (pass > 0)
       {
@@ -566,17 +574,18 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
   else if (this->Variant == Gaussian)
   {
     vtkTextureObject* rows = screen->GetTexture("contact.filter1", 4);
-    screen->BindTargets({ rows });
-    in.Draw(
-      screen, in.Gaussian, filtered,
-      [&](vtkShaderProgram* program)
-      {
-        program->SetUniformi("contactMaximumKernel", this->MaximumKernelSize);
-        program->SetUniform2i("contactDirection", std::array<int, 2>{ 1, 0 }.data());
-        program->SetUniformi("contactLastPass", 0);
-      },
-      tolerance, this->DebugView);
-    screen->UnbindTargets();
+    {
+      Targets bound(screen, { rows });
+      in.Draw(
+        screen, in.Gaussian, filtered,
+        [&](vtkShaderProgram* program)
+        {
+          program->SetUniformi("contactMaximumKernel", this->MaximumKernelSize);
+          program->SetUniform2i("contactDirection", std::array<int, 2>{ 1, 0 }.data());
+          program->SetUniformi("contactLastPass", 0);
+        },
+        tolerance, this->DebugView);
+    }
     toPacked(in.Gaussian, rows,
       [&](vtkShaderProgram* program)
       {

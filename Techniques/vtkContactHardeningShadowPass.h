@@ -225,9 +225,13 @@ protected:
   bool RenderShadowMaps(const vtkRenderState* s) override;
   bool RenderScreenSpace(const vtkRenderState* s) override;
   Traits GetTraits() const override;
-  std::string GetCameraPassDeclarations() override;
-  std::string GetCameraPassImplementation() override;
-  void SetCameraPassUniforms(vtkShaderProgram* program) override;
+  ///@{
+  /// The camera pass's code for this batch of lights: each light's distance
+  /// map (pass 2, section 3.2), from the geometry's own position and normal.
+  std::string DistanceMapDeclarations() const;
+  std::string DistanceMapImplementation() const;
+  void SetDistanceMapUniforms(vtkShaderProgram* program);
+  ///@}
 
   int Variant = PCF;
   bool UseLightSize = true;

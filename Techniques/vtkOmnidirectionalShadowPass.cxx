@@ -47,50 +47,53 @@ int vtkOmnidirectionalShadowPass::GetPCFRadius() const
 }
 
 //------------------------------------------------------------------------------
-std::string vtkOmnidirectionalShadowPass::GetVisibilityDeclarations()
+vtkSoftShadowPass::ReceiverCode vtkOmnidirectionalShadowPass::GetReceiverCode()
 {
+  // Spot and directional lights, and the other filters: the framework's.
+  ReceiverCode code;
+  if (this->Filter != Poisson)
+  {
+    return code;
+  }
   const auto& lights = this->Maps->GetLights();
   const bool cubes = std::any_of(
     lights.begin(), lights.end(), [](const vtkShadowMapManager::Light& l) { return l.Point; });
-  return cubes && this->Filter == Poisson ? vtkOmniPoissonFS : "";
-}
-
-//------------------------------------------------------------------------------
-std::string vtkOmnidirectionalShadowPass::GetVisibilityExpression(int slot)
-{
-  const auto& light = this->Maps->GetLights()[slot];
-  if (!light.Point || this->Filter != Poisson)
+  code.Declarations = cubes ? vtkOmniPoissonFS : "";
+  code.Visibility = [this](int slot)
   {
-    return this->Superclass::GetVisibilityExpression(slot);
-  }
-  // The first point light's expression computes every cube's visibility in
-  // one loop, so the shader holds one copy of the lookup whatever the number
-  // of point lights: written once per light, llvmpipe's compile time grew
-  // from 1.5 s at 6 lights to 33 s at 8.
-  const std::string m = std::to_string(light.MapIndex);
-  const bool first = this->IsFirstPointLight(slot);
-  return first ? "vtkOmniPoissonAll(vtkShadowPositionWC, vtkShadowNormalWC, " + m + ")"
-               : "omniVisibility[" + m + "]";
-}
-
-//------------------------------------------------------------------------------
-void vtkOmnidirectionalShadowPass::SetVisibilityUniforms(vtkShaderProgram* program)
-{
-  if (this->Filter != Poisson || !program->IsUniformUsed("omniTaps"))
-  {
-    return;
-  }
-  static const std::vector<glm::vec2> disc = vtkShadowSampling::PoissonDisk(32, 11, true, false);
-  program->SetUniform2fv("omniPoisson", 32, &disc[0].x);
-  program->SetUniformi("omniTaps", this->PoissonTaps);
-  for (const auto& light : this->Maps->GetLights())
-  {
-    if (light.Point)
+    const auto& light = this->Maps->GetLights()[slot];
+    if (!light.Point)
     {
-      const std::string name = "omniLightRadius[" + std::to_string(light.MapIndex) + "]";
-      program->SetUniformf(name.c_str(), static_cast<float>(light.Radius));
+      return this->GetDefaultVisibility(slot);
     }
-  }
+    // The first point light's expression computes every cube's visibility
+    // in one loop, so the shader holds one copy of the lookup whatever the
+    // number of point lights: written once per light, llvmpipe's compile
+    // time grew from 1.5 s at 6 lights to 33 s at 8.
+    const std::string m = std::to_string(light.MapIndex);
+    return this->IsFirstPointLight(slot)
+      ? "vtkOmniPoissonAll(vtkShadowPositionWC, vtkShadowNormalWC, " + m + ")"
+      : "omniVisibility[" + m + "]";
+  };
+  code.Uniforms = [this](vtkShaderProgram* program)
+  {
+    if (!program->IsUniformUsed("omniTaps"))
+    {
+      return;
+    }
+    static const std::vector<glm::vec2> disc = vtkShadowSampling::PoissonDisk(32, 11, true, false);
+    program->SetUniform2fv("omniPoisson", 32, &disc[0].x);
+    program->SetUniformi("omniTaps", this->PoissonTaps);
+    for (const auto& light : this->Maps->GetLights())
+    {
+      if (light.Point)
+      {
+        const std::string name = "omniLightRadius[" + std::to_string(light.MapIndex) + "]";
+        program->SetUniformf(name.c_str(), static_cast<float>(light.Radius));
+      }
+    }
+  };
+  return code;
 }
 
 //------------------------------------------------------------------------------

@@ -78,9 +78,7 @@ protected:
   bool RenderShadowMaps(const vtkRenderState* s) override;
   Traits GetTraits() const override;
   int GetPCFRadius() const override;
-  std::string GetVisibilityDeclarations() override;
-  std::string GetVisibilityExpression(int slot) override;
-  void SetVisibilityUniforms(vtkShaderProgram* program) override;
+  ReceiverCode GetReceiverCode() override;
 
   int Filter = Poisson;
   int PCFRadius = 1;

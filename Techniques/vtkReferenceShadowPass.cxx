@@ -88,9 +88,13 @@ bool vtkReferenceShadowPass::RenderScreenSpace(const vtkRenderState* s)
     return false;
   }
 
-  // The camera pass writes each pixel's face normal for the accumulation.
+  // The camera pass writes each pixel's face normal for the accumulation;
+  // points and lines (no face) take the receivers' own hard shadow.
   vtkTextureObject* normals = this->Screen->GetTexture("reference.normals", 4);
-  if (!this->RenderCameraDepth(s, { normals }))
+  CameraPassCode code;
+  code.Implementation =
+    "  gl_FragData[0] = vtkShadowFaceDefined ? vec4(vtkShadowNormalWC, 1.0) : vec4(0.0);\n";
+  if (!this->RenderCameraDepth(s, { normals }, code))
   {
     return false;
   }
@@ -227,13 +231,6 @@ bool vtkReferenceShadowPass::AccumulateSample(const vtkRenderState* s, int slot,
   }
   map->Deactivate();
   return true;
-}
-
-//------------------------------------------------------------------------------
-std::string vtkReferenceShadowPass::GetCameraPassImplementation()
-{
-  // Points and lines (no face) take the receivers' own hard shadow.
-  return "  gl_FragData[0] = vtkShadowFaceDefined ? vec4(vtkShadowNormalWC, 1.0) : vec4(0.0);\n";
 }
 
 //------------------------------------------------------------------------------

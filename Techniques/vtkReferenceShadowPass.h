@@ -88,7 +88,6 @@ protected:
   bool RenderShadowMaps(const vtkRenderState* s) override;
   bool RenderScreenSpace(const vtkRenderState* s) override;
   Traits GetTraits() const override;
-  std::string GetCameraPassImplementation() override;
 
   int NumberOfSamples = 256;
   int Sampling = Disc;

@@ -22,6 +22,8 @@
 #include "vtkSoftShadowsTechniquesModule.h" // for export macro
 #include "vtkWrappingHints.h"               // for VTK_NEWINSTANCE
 
+#include <string> // for std::string
+
 class vtkSoftShadowPass;
 
 class VTKSOFTSHADOWSTECHNIQUES_EXPORT vtkShadowTechniqueCatalog : public vtkObject
@@ -72,6 +74,22 @@ public:
   static int GetParameterSize(int technique, int parameter);
   static double GetParameterMinimum(int technique, int parameter);
   static double GetParameterMaximum(int technique, int parameter);
+  /// Whether every technique has the parameter: one of vtkSoftShadowPass's
+  /// own (map_size, the biases, ...), not the technique's.
+  static bool IsParameterShared(int technique, int parameter);
+  ///@}
+
+  ///@{
+  /**
+   * A technique SPEC, `name[:variant]` as the `softshadows` program and
+   * ParaView's view take it. ParseSpec() puts the technique and the variant
+   * (-1 when the SPEC names none: the default) in `ids`; false, saying
+   * nothing, when the name is no technique (ids[0] -1) or the variant none
+   * of its (ids[1] -1). GetSpecProblem() says what is wrong in one line
+   * naming what is known, and is empty for a good SPEC.
+   */
+  static bool ParseSpec(const char* spec, int ids[2]);
+  static std::string GetSpecProblem(const char* spec);
   ///@}
 
   /**
@@ -80,6 +98,10 @@ public:
    * error, for indices out of range.
    */
   VTK_NEWINSTANCE static vtkSoftShadowPass* NewPass(int technique, int variant);
+
+  /// A new pass of a SPEC (ParseSpec()); null, with the SPEC's problem as an
+  /// error, for a bad one.
+  VTK_NEWINSTANCE static vtkSoftShadowPass* NewPass(const char* spec);
 
   /**
    * Sets a parameter of `pass`, a pass of `technique`, from

@@ -15,7 +15,6 @@
 #include "vtkShaderProgram.h"
 #include "vtkShadowCasterRegistry.h"
 #include "vtkShadowDrawer.h"
-#include "vtkShadowGPUTimer.h"
 #include "vtkShadowGeometry.h"
 #include "vtkShadowMapManager.h"
 #include "vtkShadowScreenBuffers.h"
@@ -115,7 +114,6 @@ struct vtkSilhouetteShadowPass::Internals
   // Pass 2's shaders, [rectangles around edges][a cube face (no 2D depth
   // map to read)]: the vertex shader's with the common depths.
   std::array<std::array<std::string, 2>, 2> VertexShaders, FragmentShaders;
-  vtkShadowGPUTimer PassTimer; ///< pass 2, with MeasureSilhouettePass
   Internals()
   {
     for (int bands = 0; bands < 2; ++bands)
@@ -235,10 +233,7 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
   }
   this->Internal->Meshes.Prune(*this->Casters);
 
-  if (this->MeasureSilhouettePass)
-  {
-    this->Internal->PassTimer.Start();
-  }
+  this->TechniqueTimer.Start();
   auto& bands = this->Internal->Bands;
   bands.resize(lights.size());
   for (size_t slot = 0; slot < lights.size(); ++slot)
@@ -369,11 +364,9 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
     else
     {
       // Read raw through a sampler object: pass 1's depths.
-      light.DepthMap->Activate();
-      this->Screen->BindRawDepth(light.DepthMap);
+      vtkShadowScreenBuffers::Sampler raw(
+        this->Screen.get(), light.DepthMap, vtkShadowScreenBuffers::Sampler::Reading::RawDepth);
       drawn = this->Draw(s, setup);
-      this->Screen->UnbindSampler(light.DepthMap->GetTextureUnit());
-      light.DepthMap->Deactivate();
     }
     if (!drawn)
     {
@@ -382,10 +375,7 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
       return false;
     }
   }
-  if (this->MeasureSilhouettePass)
-  {
-    this->Internal->PassTimer.Stop();
-  }
+  this->TechniqueTimer.Stop();
 
   this->TopologyAwareMeshBytes = 0;
   for (const auto& mesh : meshes)
@@ -397,28 +387,46 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-std::vector<vtkSoftShadowPass::ReceiverTexture> vtkSilhouetteShadowPass::GetReceiverTextures()
+vtkSoftShadowPass::ReceiverCode vtkSilhouetteShadowPass::GetReceiverCode()
 {
-  std::vector<ReceiverTexture> textures;
+  ReceiverCode code;
+  code.Declarations = std::string(vtkSilhouetteCommon) + vtkSilhouetteLookupFS;
+  // Each light's signed distances and its lookup texture.
   const auto& lights = this->Maps->GetLights();
   for (size_t slot = 0; slot < lights.size(); ++slot)
   {
     const std::string i = std::to_string(slot);
-    textures.push_back({ "silhouetteDistances" + i,
+    code.Textures.push_back({ "silhouetteDistances" + i,
       lights[slot].Point ? "samplerCube" : "sampler2D", lights[slot].Textures[0] });
-    textures.push_back({ "silhouetteLookup" + i, "sampler2D", lights[slot].Textures[1] });
+    code.Textures.push_back({ "silhouetteLookup" + i, "sampler2D", lights[slot].Textures[1] });
   }
-  return textures;
+  code.Visibility = [this](int slot) { return this->GetVisibility(slot); };
+  code.Uniforms = [this](vtkShaderProgram* program)
+  {
+    if (!program->IsUniformUsed("silhouetteMapSize") &&
+      !program->IsUniformUsed("silhouetteBand[0]"))
+    {
+      return;
+    }
+    const auto& bands = this->Internal->Bands;
+    for (size_t slot = 0; slot < bands.size(); ++slot)
+    {
+      const std::string i = "[" + std::to_string(slot) + "]";
+      program->SetUniform4f(("silhouetteDepthRange" + i).c_str(), bands[slot].Range);
+      const float band[2] = { bands[slot].HalfWidth, bands[slot].MaximumPenumbra };
+      program->SetUniform2f(("silhouetteBand" + i).c_str(), band);
+    }
+    program->SetUniformf("silhouetteMapSize", static_cast<float>(this->MapSize));
+    program->SetUniformf("silhouetteSpread", static_cast<float>(this->SampleSpread));
+    const float texels[2] = { static_cast<float>(this->LookupTexels),
+      static_cast<float>(this->Variant == Soft ? this->LookupRows : 1) };
+    program->SetUniform2f("silhouetteLookupTexels", texels);
+  };
+  return code;
 }
 
 //------------------------------------------------------------------------------
-std::string vtkSilhouetteShadowPass::GetVisibilityDeclarations()
-{
-  return std::string(vtkSilhouetteCommon) + vtkSilhouetteLookupFS;
-}
-
-//------------------------------------------------------------------------------
-std::string vtkSilhouetteShadowPass::GetVisibilityExpression(int slot)
+std::string vtkSilhouetteShadowPass::GetVisibility(int slot) const
 {
   const auto& light = this->Maps->GetLights()[slot];
   const std::string i = std::to_string(slot);
@@ -449,40 +457,10 @@ std::string vtkSilhouetteShadowPass::GetVisibilityExpression(int slot)
 }
 
 //------------------------------------------------------------------------------
-void vtkSilhouetteShadowPass::SetVisibilityUniforms(vtkShaderProgram* program)
-{
-  if (!program->IsUniformUsed("silhouetteMapSize") && !program->IsUniformUsed("silhouetteBand[0]"))
-  {
-    return;
-  }
-  const auto& bands = this->Internal->Bands;
-  for (size_t slot = 0; slot < bands.size(); ++slot)
-  {
-    const std::string i = "[" + std::to_string(slot) + "]";
-    program->SetUniform4f(("silhouetteDepthRange" + i).c_str(), bands[slot].Range);
-    const float band[2] = { bands[slot].HalfWidth, bands[slot].MaximumPenumbra };
-    program->SetUniform2f(("silhouetteBand" + i).c_str(), band);
-  }
-  program->SetUniformf("silhouetteMapSize", static_cast<float>(this->MapSize));
-  program->SetUniformf("silhouetteSpread", static_cast<float>(this->SampleSpread));
-  program->SetUniformf("silhouetteEdgeBias", 0.0f);
-  const float texels[2] = { static_cast<float>(this->LookupTexels),
-    static_cast<float>(this->Variant == Soft ? this->LookupRows : 1) };
-  program->SetUniform2f("silhouetteLookupTexels", texels);
-}
-
-//------------------------------------------------------------------------------
-double vtkSilhouetteShadowPass::GetSilhouettePassTime()
-{
-  return this->Internal->PassTimer.GetMilliseconds();
-}
-
-//------------------------------------------------------------------------------
 void vtkSilhouetteShadowPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);
   this->Internal->Meshes.Clear();
-  this->Internal->PassTimer.ReleaseGraphicsResources();
   for (auto& band : this->Internal->Bands)
   {
     band.LookupKey.clear();
@@ -506,6 +484,5 @@ void vtkSilhouetteShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "HalfPrecision: " << this->HalfPrecision << "\n";
   os << indent << "DropNonSilhouetteFaces: " << this->DropNonSilhouetteFaces << "\n";
   os << indent << "DebugView: " << this->DebugView << "\n";
-  os << indent << "MeasureSilhouettePass: " << this->MeasureSilhouettePass << "\n";
   os << indent << "TopologyAwareMeshBytes: " << this->TopologyAwareMeshBytes << "\n";
 }

@@ -192,17 +192,12 @@ public:
 
   ///@{
   /**
-   * Results of the last frame: the bytes of every caster's TAM on the GPU,
-   * the TAM vertices drawn per light, and the silhouette pass's GPU time
-   * (ms, all lights, of the last frame whose timer queries had completed;
-   * measured only when MeasureSilhouettePass is on).
+   * Results of the last frame: the bytes of every caster's TAM on the GPU
+   * and the TAM vertices drawn per light. The silhouette pass's GPU time,
+   * all lights, is GetTechniqueGPUTime().
    */
   vtkGetMacro(TopologyAwareMeshBytes, vtkIdType);
   vtkGetMacro(TopologyAwareMeshVertices, vtkIdType);
-  double GetSilhouettePassTime();
-  vtkSetMacro(MeasureSilhouettePass, bool);
-  vtkGetMacro(MeasureSilhouettePass, bool);
-  vtkBooleanMacro(MeasureSilhouettePass, bool);
   ///@}
 
   void ReleaseGraphicsResources(vtkWindow* w) override;
@@ -212,12 +207,10 @@ protected:
   ~vtkSilhouetteShadowPass() override;
 
   bool RenderShadowMaps(const vtkRenderState* s) override;
-  std::string GetVisibilityDeclarations() override;
   Traits GetTraits() const override;
-  std::string GetVisibilityExpression(int slot) override;
-  void SetVisibilityUniforms(vtkShaderProgram* program) override;
-  std::vector<ReceiverTexture> GetReceiverTextures() override;
-  /// Each light's signed distances and its lookup texture.
+  ReceiverCode GetReceiverCode() override;
+  /// Light `slot`'s visibility: eq. 4 looked up (or the debug view).
+  std::string GetVisibility(int slot) const;
 
   int Variant = Soft;
   double ExpectedWidth = 0.0;
@@ -231,7 +224,6 @@ protected:
   bool HalfPrecision = false;
   bool DropNonSilhouetteFaces = false;
   bool DebugView = false;
-  bool MeasureSilhouettePass = false;
   vtkIdType TopologyAwareMeshBytes = 0;
   vtkIdType TopologyAwareMeshVertices = 0;
 

@@ -636,58 +636,8 @@ bool vtkSmoothieShadowPass::RenderShadowMaps(const vtkRenderState* s)
       return false;
     }
   }
-  this->SilhouetteTime = cpu;
+  this->TechniqueCPUTime = cpu;
   return true;
-}
-
-//------------------------------------------------------------------------------
-std::vector<vtkSoftShadowPass::ReceiverTexture> vtkSmoothieShadowPass::GetReceiverTextures()
-{
-  std::vector<ReceiverTexture> textures;
-  const auto& lights = this->Maps->GetLights();
-  for (size_t slot = 0; slot < lights.size(); ++slot)
-  {
-    const std::string i = std::to_string(slot);
-    if (lights[slot].Point)
-    {
-      textures.push_back({ "smoothieBuffer" + i, "samplerCube", lights[slot].Textures[1] });
-      continue;
-    }
-    textures.push_back({ "smoothieDepths" + i, "sampler2D", lights[slot].Textures[0] });
-    textures.push_back({ "smoothieBuffer" + i, "sampler2D", lights[slot].Textures[1] });
-  }
-  return textures;
-}
-
-//------------------------------------------------------------------------------
-std::string vtkSmoothieShadowPass::GetVisibilityDeclarations()
-{
-  return vtkSmoothieLookupFS;
-}
-
-//------------------------------------------------------------------------------
-std::string vtkSmoothieShadowPass::GetVisibilityExpression(int slot)
-{
-  const auto& light = this->Maps->GetLights()[slot];
-  const std::string i = std::to_string(slot);
-  const std::string m = std::to_string(light.MapIndex);
-  if (light.Point)
-  {
-    return "smoothieCubeVisibility(vtkShadowCube[" + m + "], smoothieBuffer" + i +
-      ", vtkShadowCubeCenter[" + m + "], vtkShadowPositionWC, vtkShadowNormalWC)";
-  }
-  return "smoothieVisibility(smoothieDepths" + i + ", smoothieBuffer" + i +
-    ", vtkShadowWorldToMap[" + i + "], vtkShadowReceiver(" + i +
-    ", vtkShadowPositionWC, vtkShadowNormalWC), vtkShadowEye[" + i + "], vtkShadowAxis[" + i + "])";
-}
-
-//------------------------------------------------------------------------------
-void vtkSmoothieShadowPass::SetVisibilityUniforms(vtkShaderProgram* program)
-{
-  if (program->IsUniformUsed("smoothieMapSize"))
-  {
-    program->SetUniformf("smoothieMapSize", static_cast<float>(this->MapSize));
-  }
 }
 
 //------------------------------------------------------------------------------
@@ -695,6 +645,48 @@ void vtkSmoothieShadowPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);
   this->Internal->Casters.Clear();
+}
+
+//------------------------------------------------------------------------------
+vtkSoftShadowPass::ReceiverCode vtkSmoothieShadowPass::GetReceiverCode()
+{
+  ReceiverCode code;
+  code.Declarations = vtkSmoothieLookupFS;
+  const auto& lights = this->Maps->GetLights();
+  for (size_t slot = 0; slot < lights.size(); ++slot)
+  {
+    const std::string i = std::to_string(slot);
+    if (lights[slot].Point)
+    {
+      code.Textures.push_back({ "smoothieBuffer" + i, "samplerCube", lights[slot].Textures[1] });
+      continue;
+    }
+    code.Textures.push_back({ "smoothieDepths" + i, "sampler2D", lights[slot].Textures[0] });
+    code.Textures.push_back({ "smoothieBuffer" + i, "sampler2D", lights[slot].Textures[1] });
+  }
+  code.Visibility = [this](int slot)
+  {
+    const auto& light = this->Maps->GetLights()[slot];
+    const std::string i = std::to_string(slot);
+    const std::string m = std::to_string(light.MapIndex);
+    if (light.Point)
+    {
+      return "smoothieCubeVisibility(vtkShadowCube[" + m + "], smoothieBuffer" + i +
+        ", vtkShadowCubeCenter[" + m + "], vtkShadowPositionWC, vtkShadowNormalWC)";
+    }
+    return "smoothieVisibility(smoothieDepths" + i + ", smoothieBuffer" + i +
+      ", vtkShadowWorldToMap[" + i + "], vtkShadowReceiver(" + i +
+      ", vtkShadowPositionWC, vtkShadowNormalWC), vtkShadowEye[" + i + "], vtkShadowAxis[" + i +
+      "])";
+  };
+  code.Uniforms = [this](vtkShaderProgram* program)
+  {
+    if (program->IsUniformUsed("smoothieMapSize"))
+    {
+      program->SetUniformf("smoothieMapSize", static_cast<float>(this->MapSize));
+    }
+  };
+  return code;
 }
 
 //------------------------------------------------------------------------------
@@ -711,5 +703,4 @@ void vtkSmoothieShadowPass::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "BuildOnGPU: " << this->BuildOnGPU << "\n";
   os << indent << "NumberOfSilhouetteEdges: " << this->NumberOfSilhouetteEdges << "\n";
-  os << indent << "SilhouetteTime: " << this->SilhouetteTime << "\n";
 }

@@ -132,12 +132,11 @@ public:
   ///@{
   /**
    * Results of the last frame, over every caster and light: silhouette
-   * edges, and the CPU time (ms) of the silhouette searches and of building
-   * the smoothies' edge lists and, on the CPU, their triangles (near 0 when
-   * nothing moved).
+   * edges. GetTechniqueCPUTime() is the time of the silhouette searches and
+   * of building the smoothies' edge lists and, on the CPU, their triangles
+   * (near 0 when nothing moved).
    */
   vtkGetMacro(NumberOfSilhouetteEdges, vtkIdType);
-  vtkGetMacro(SilhouetteTime, double);
   ///@}
 
   void ReleaseGraphicsResources(vtkWindow* w) override;
@@ -148,10 +147,7 @@ protected:
 
   bool RenderShadowMaps(const vtkRenderState* s) override;
   Traits GetTraits() const override;
-  std::string GetVisibilityDeclarations() override;
-  std::string GetVisibilityExpression(int slot) override;
-  void SetVisibilityUniforms(vtkShaderProgram* program) override;
-  std::vector<ReceiverTexture> GetReceiverTextures() override;
+  ReceiverCode GetReceiverCode() override;
   /// Each light's smoothie buffer (spot and directional lights' linear
   /// depths take the place of the framework's map).
 
@@ -162,7 +158,6 @@ protected:
   int SilhouetteSearch = 1;
   bool BuildOnGPU = true;
   vtkIdType NumberOfSilhouetteEdges = 0;
-  double SilhouetteTime = 0.0;
 
 private:
   vtkSmoothieShadowPass(const vtkSmoothieShadowPass&) = delete;

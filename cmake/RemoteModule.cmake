@@ -35,11 +35,12 @@ list(TRANSFORM softshadows_rendering_framework_headers PREPEND "Rendering/")
 list(TRANSFORM softshadows_techniques_classes PREPEND "Techniques/")
 list(TRANSFORM softshadows_techniques_private_classes PREPEND "Techniques/")
 list(TRANSFORM softshadows_techniques_private_headers PREPEND "Techniques/")
+list(TRANSFORM softshadows_techniques_catalog_sources PREPEND "Techniques/")
 list(TRANSFORM softshadows_truth_classes PREPEND "Truth/")
 vtk_module_add_module(VTK::RenderingSoftShadows
   CLASSES ${softshadows_filters_classes} ${softshadows_rendering_classes}
     ${softshadows_techniques_classes} ${softshadows_truth_classes}
-  SOURCES ${shader_sources}
+  SOURCES ${shader_sources} ${softshadows_techniques_catalog_sources}
   NOWRAP_CLASSES ${softshadows_rendering_framework_classes}
   NOWRAP_HEADERS ${softshadows_rendering_framework_headers}
   PRIVATE_CLASSES ${softshadows_filters_private_classes} ${softshadows_rendering_private_classes}

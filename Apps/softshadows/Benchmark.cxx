@@ -134,19 +134,20 @@ std::vector<Timing> RunBenchmark(vtkRenderWindow* window, vtkRenderer* renderer,
       if (round >= warmUp)
       {
         times[t].push_back(elapsed.count());
-        if (techniques[t].CpuTime)
-        {
-          cpu[t].push_back(techniques[t].CpuTime());
-        }
-        if (techniques[t].PassTime)
-        {
-          pass[t].push_back(techniques[t].PassTime());
-        }
         if (const vtkSoftShadowPass* shadows = techniques[t].Shadows)
         {
           steps[t][0].push_back(shadows->GetLightSpaceTime());
           steps[t][1].push_back(shadows->GetScreenSpaceTime());
           steps[t][2].push_back(shadows->GetReceiversTime());
+          // The technique's own work, where it times it.
+          if (shadows->GetTechniqueCPUTime() >= 0.0)
+          {
+            cpu[t].push_back(shadows->GetTechniqueCPUTime());
+          }
+          if (shadows->GetTechniqueGPUTime() >= 0.0)
+          {
+            pass[t].push_back(shadows->GetTechniqueGPUTime());
+          }
         }
       }
     }
@@ -166,7 +167,7 @@ std::vector<Timing> RunBenchmark(vtkRenderWindow* window, vtkRenderer* renderer,
     timing.LightSpaceMedianMs = steps[t][0].empty() ? -1.0 : Median(steps[t][0]);
     timing.ScreenSpaceMedianMs = steps[t][1].empty() ? -1.0 : Median(steps[t][1]);
     timing.ReceiversMedianMs = steps[t][2].empty() ? -1.0 : Median(steps[t][2]);
-    timing.MapSize = mapSize;
+    timing.MapSize = techniques[t].Shadows ? techniques[t].Shadows->GetMapSize() : mapSize;
     timing.Size = { window->GetSize()[0], window->GetSize()[1] };
     hardMean = timing.Technique == "hard" ? timing.MeanMs : hardMean;
     timings.push_back(timing);

@@ -3,8 +3,6 @@
 #include "Techniques.h"
 
 #include "vtkShadowTechniqueCatalog.h"
-#include "vtkSilhouetteShadowPass.h"
-#include "vtkSmoothieShadowPass.h"
 #include "vtkSoftShadowPass.h"
 
 #include <vtkCameraPass.h>
@@ -113,16 +111,6 @@ Technique TechniqueOf(int technique)
     TechniqueInstance instance;
     instance.Pass = pass;
     instance.Shadows = pass;
-    if (auto* smoothies = vtkSmoothieShadowPass::SafeDownCast(pass))
-    {
-      instance.CpuTime = [smoothies]() { return smoothies->GetSilhouetteTime(); };
-    }
-    if (auto* silhouette = vtkSilhouetteShadowPass::SafeDownCast(pass))
-    {
-      // Pass 2 by timer queries: nothing waits for them.
-      silhouette->MeasureSilhouettePassOn();
-      instance.PassTime = [silhouette]() { return silhouette->GetSilhouettePassTime(); };
-    }
     return instance;
   };
   return made;
@@ -195,19 +183,15 @@ const Technique& RequireTechnique(const std::string& name, const std::string& wh
 void RequireVariant(
   const Technique& technique, const std::string& variant, const std::string& where)
 {
-  if (technique.Variants.empty())
+  if (technique.Name == "vtk")
   {
-    throw InputError(
-      where, "unknown variant '" + variant + "': technique '" + technique.Name + "' has none");
+    throw InputError(where, "unknown variant '" + variant + "': technique 'vtk' has none");
   }
-  const auto& variants = technique.Variants;
-  const bool found = std::any_of(variants.begin(), variants.end(),
-    [&](const TechniqueVariant& candidate) { return candidate.Name == variant; });
-  if (!found)
+  const std::string spec = technique.Name + ":" + variant;
+  int ids[2];
+  if (!Catalog::ParseSpec(spec.c_str(), ids))
   {
-    throw InputError(where,
-      "unknown variant '" + variant + "' of technique '" + technique.Name + "' " +
-        KnownNames(variants, [](const TechniqueVariant& candidate) { return candidate.Name; }));
+    throw InputError(where, Catalog::GetSpecProblem(spec.c_str()));
   }
 }
 }
@@ -240,16 +224,22 @@ const std::vector<Technique>& Techniques()
 //------------------------------------------------------------------------------
 TechniqueSpec ParseTechniqueSpec(const std::string& text, const std::string& where)
 {
-  TechniqueSpec spec;
-  const auto colon = text.find(':');
-  spec.Name = text.substr(0, colon);
-  const Technique& technique = RequireTechnique(spec.Name, where);
-  if (colon != std::string::npos)
+  if (text == "vtk")
   {
-    spec.Variant = text.substr(colon + 1);
-    RequireVariant(technique, spec.Variant, where);
+    return { "vtk", "" }; // VTK's own pass: the one technique outside the catalog
   }
-  return spec;
+  int ids[2] = { -1, -1 };
+  if (!Catalog::ParseSpec(text.c_str(), ids))
+  {
+    std::string problem = Catalog::GetSpecProblem(text.c_str());
+    if (ids[0] < 0)
+    {
+      problem.insert(problem.size() - 1, ", vtk");
+    }
+    throw InputError(where, problem);
+  }
+  return { Catalog::GetTechniqueName(ids[0]),
+    ids[1] < 0 ? std::string() : Catalog::GetVariantName(ids[0], ids[1]) };
 }
 
 //------------------------------------------------------------------------------
@@ -288,6 +278,7 @@ TechniqueInstance CreateTechnique(const TechniqueSpec& spec, int mapSize, const 
 
   TechniqueInstance instance = technique.Create(variant);
   instance.Spec = spec.ToString();
+  instance.Name = spec.Name;
   if (instance.Shadows)
   {
     instance.Shadows->SetMapSize(mapSize);
@@ -307,13 +298,30 @@ TechniqueInstance CreateTechnique(const TechniqueSpec& spec, int mapSize, const 
 }
 
 //------------------------------------------------------------------------------
+bool SetTechniqueParameter(TechniqueInstance& instance, const std::string& key, const Json& value)
+{
+  const Technique& technique = RequireTechnique(instance.Name, "technique");
+  for (const TechniqueParameter& parameter : technique.Parameters)
+  {
+    if (parameter.Key == key)
+    {
+      CheckValue(value, parameter.Type, parameter.Allowed, instance.Name + "." + key);
+      parameter.Apply(instance, value);
+      return true;
+    }
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
 void PrintTechniques(std::ostream& os)
 {
   os << "Techniques, as --technique SPEC with SPEC = name[:variant]. Parameters go in the\n"
         "scene's \"shadows\" object under the technique's name, e.g.\n"
         "  \"shadows\": {\"technique\": \"hard\", \"map_size\": 2048, "
         "\"hard\": {\"pcf_radius\": 2}}\n"
-        "and \"shadows.map_size\" (default 1024) sets every technique's shadow map size.\n";
+        "and \"shadows.map_size\" (default 1024) sets every technique's shadow map size\n"
+        "(a technique's own map_size overrides it).\n";
   // Columns as wide as their widest entry over every technique.
   std::vector<std::vector<std::string>> defaults;
   std::size_t keyWidth = 10;

@@ -43,15 +43,10 @@ struct TechniqueSpec
 struct TechniqueInstance
 {
   std::string Spec; ///< as requested, e.g. `contact:multipass`
+  std::string Name; ///< the technique's name, e.g. `contact`
   vtkSmartPointer<vtkRenderPass> Pass;
   vtkSoftShadowPass* Shadows = nullptr;   ///< this module's pass; null for `vtk`
   vtkShadowMapBakerPass* Baker = nullptr; ///< VTK's baker; only for `vtk`
-  /// The technique's own CPU time in the last frame (ms), for techniques
-  /// that report one (smoothies: silhouette search and edge lists).
-  std::function<double()> CpuTime;
-  /// The wall time of the technique's own light-space pass in the last
-  /// frame (ms), for techniques that measure one (silhouette: pass 2).
-  std::function<double()> PassTime;
 };
 
 /// A technique parameter: how the scene spells it and how it reaches the pass.
@@ -102,6 +97,13 @@ void CheckTechniqueParameters(
  * variant is the spec's, else the parameters' `variant`, else the default.
  */
 TechniqueInstance CreateTechnique(const TechniqueSpec& spec, int mapSize, const Json& parameters);
+
+/**
+ * Sets the parameter `key` of the instance's technique to `value` (checked
+ * as scene files are: throws InputError for a bad value). False when the
+ * technique has no such parameter.
+ */
+bool SetTechniqueParameter(TechniqueInstance& instance, const std::string& key, const Json& value);
 
 /// The `techniques` listing: every technique, variant and parameter.
 void PrintTechniques(std::ostream& os);

@@ -14,9 +14,6 @@
 #include "Techniques.h"
 #include "Viewer.h"
 
-#include "vtkContactHardeningShadowPass.h"
-#include "vtkSilhouetteShadowPass.h"
-
 #include "vtkSoftShadowPass.h"
 
 #include <vtkImageData.h>
@@ -233,16 +230,9 @@ int Render(const std::vector<std::string>& arguments)
   TechniqueInstance& technique = session.Techniques.front();
   if (line.Has("--debug-view"))
   {
-    // contact: the paper's figure 4 view; silhouette: the signed distance map.
-    if (auto* contact = vtkContactHardeningShadowPass::SafeDownCast(technique.Shadows))
-    {
-      contact->DebugViewOn();
-    }
-    else if (auto* silhouette = vtkSilhouetteShadowPass::SafeDownCast(technique.Shadows))
-    {
-      silhouette->DebugViewOn();
-    }
-    else
+    // The techniques' `debug_view` parameter (contact: the paper's figure 4
+    // view; silhouette: the signed distance map).
+    if (!SetTechniqueParameter(technique, "debug_view", Json(true)))
     {
       throw InputError("--debug-view",
         "technique '" + technique.Spec + "' has no debug view (contact and silhouette have one)");

@@ -5,7 +5,8 @@
 //   GenerateViewXML TEMPLATE OUTPUT
 // In TEMPLATE, @SHADOW_TECHNIQUES@ becomes the Shadow Technique choices
 // (`name[:variant]`, as `softshadows techniques` lists them) and
-// @SHADOW_PARAMETERS@ one property per technique parameter, defaults read
+// @SHADOW_PARAMETERS@ one property per technique parameter (but map_size,
+// the view's ShadowMapSize for every technique), defaults read
 // from a fresh pass, and one panel group per technique shown only while it is
 // chosen. A parameter's property is named and labelled `<Technique> <Key>`
 // (contact.pass_limit: ContactPassLimit, "Contact Pass Limit"; Python names
@@ -30,20 +31,6 @@
 namespace
 {
 using Catalog = vtkShadowTechniqueCatalog;
-
-// Parameters the framework gives every technique: advanced in the panel.
-bool IsCommon(const std::string& key)
-{
-  for (const char* common : { "slope_scaled_bias", "constant_bias", "normal_bias", "distance_bias",
-         "packed_cube_maps", "depth_pre_pass" })
-  {
-    if (key == common)
-    {
-      return true;
-    }
-  }
-  return false;
-}
 
 std::string Escape(const std::string& text)
 {
@@ -139,7 +126,8 @@ std::string Property(int t, int p, vtkSoftShadowPass* defaults)
     xml += (i ? " " : "") + Number(values[i]);
   }
   xml += "\"";
-  if (IsCommon(key))
+  // The parameters every technique shares: advanced in the panel.
+  if (Catalog::IsParameterShared(t, p))
   {
     xml += "\n        panel_visibility=\"advanced\"";
   }
@@ -194,6 +182,10 @@ std::string Parameters()
     groups += "      <PropertyGroup label=\"" + Title(technique) + "\">\n";
     for (int p = 0; p < Catalog::GetNumberOfParameters(t); ++p)
     {
+      if (std::string(Catalog::GetParameterKey(t, p)) == "map_size")
+      {
+        continue; // the view's ShadowMapSize, for every technique
+      }
       properties += Property(t, p, defaults);
       groups += "        <Property name=\"" +
         WithoutSpaces(Title(technique) + " " + Title(Catalog::GetParameterKey(t, p))) + "\"/>\n";

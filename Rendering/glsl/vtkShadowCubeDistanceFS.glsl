@@ -3,7 +3,7 @@
 // Point lights' cube maps (vtkShadowDistanceStage): the squared distance of
 // the fragment to the face's eye, the light, from its window position; or
 // (vtkShadowFaceLinear) its linear depth along any frustum's axis.
-// Uses vtkShadowPackDistance() (vtkShadowCubeLookupFS.glsl).
+// Uses: vtkShadowCubeLookupFS.glsl (vtkShadowPackDistance).
 uniform mat4 vtkShadowFaceClipToView; // the face's inverse projection
 uniform float vtkShadowFaceSize;      // the face's width in texels
 uniform float vtkShadowFaceRange;     // 0: float map; else RGBA8, packed over this (far^2)

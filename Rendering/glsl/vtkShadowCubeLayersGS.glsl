@@ -7,6 +7,7 @@
 // face 0; since all faces share the light as eye, face f's clip position is
 // a fixed matrix times face 0's. The //VTK:: tags let the mapper pass its
 // varyings through, as in its own geometry shaders.
+// Uses: nothing but the mapper's shaders.
 
 //VTK::PositionVC::Dec
 //VTK::PrimID::Dec

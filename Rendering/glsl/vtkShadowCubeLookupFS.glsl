@@ -6,6 +6,7 @@
 //
 // range: 0 for a float cube map; else the map is RGBA8, each texel packing
 // the squared distance over `range` (section 12.3.3, method 1).
+// Uses: nothing.
 
 vec4 vtkShadowPackDistance(float v)
 {

@@ -11,6 +11,7 @@
 // depth bias it does not depend on how depth is stored, so surfaces facing
 // the light head-on (zero depth slope) and positions rebuilt from a depth
 // buffer stay free of acne.
+// Uses: nothing.
 //
 // eye: the map's eye, w = 1 for a perspective (spot) map, 0 for a parallel
 // one; axis: unit view direction of the map; footprint: world size of one

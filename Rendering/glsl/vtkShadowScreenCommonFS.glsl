@@ -5,6 +5,7 @@
 
 // Shared by every screen-space shadow pass: the camera depth pre-pass and
 // the matrix taking its clip coordinates back to world coordinates.
+// Uses: nothing.
 in vec2 texCoord;
 uniform sampler2D vtkShadowCameraDepth;
 uniform mat4 vtkShadowCameraClipToWorld;

@@ -4,6 +4,7 @@
 // receivers (vtkSoftShadowPass): its world position and geometric normal,
 // from the mapper's view-space position (vertexVC: imposters ray-cast it in
 // the fragment shader).
+// Uses: nothing but the mapper's shader (vertexVC, normalVC).
 uniform mat4 vtkShadowViewToWorld; // the camera's view to world matrix
 // The normal from derivatives of the fragment's own position: the face's
 // true orientation, which the normal offset needs (interpolated normals lie

@@ -292,46 +292,41 @@ protected:
     return true;
   }
 
-  std::vector<ReceiverTexture> GetReceiverTextures() override
+  ReceiverCode GetReceiverCode() override
   {
-    std::vector<ReceiverTexture> textures;
+    ReceiverCode code;
     if (this->UseCompute)
     {
-      textures.push_back({ "probeScreen", "sampler2D", this->ScreenVisibility });
-      return textures;
+      code.Textures.push_back({ "probeScreen", "sampler2D", this->ScreenVisibility });
     }
-    const auto& lights = this->Maps->GetLights();
-    for (size_t slot = 0; slot < lights.size(); ++slot)
+    else
     {
-      textures.push_back(
-        { "probeLight" + std::to_string(slot), "sampler2D", lights[slot].Textures[0] });
+      const auto& lights = this->Maps->GetLights();
+      for (size_t slot = 0; slot < lights.size(); ++slot)
+      {
+        code.Textures.push_back(
+          { "probeLight" + std::to_string(slot), "sampler2D", lights[slot].Textures[0] });
+      }
     }
-    return textures;
-  }
-
-  std::string GetVisibilityDeclarations() override
-  {
-    return "uniform ivec2 probeOrigin;\n"
-           "float probeLookup(sampler2D target, vec4 p)\n"
-           "{\n"
-           "  p.xyz /= p.w;\n"
-           "  return texture(target, p.xy).r;\n"
-           "}\n";
-  }
-
-  std::string GetVisibilityExpression(int slot) override
-  {
-    if (this->UseCompute)
+    code.Declarations = "uniform ivec2 probeOrigin;\n"
+                        "float probeLookup(sampler2D target, vec4 p)\n"
+                        "{\n"
+                        "  p.xyz /= p.w;\n"
+                        "  return texture(target, p.xy).r;\n"
+                        "}\n";
+    code.Visibility = [this](int slot) -> std::string
     {
-      return "texelFetch(probeScreen, ivec2(gl_FragCoord.xy) - probeOrigin, 0).r";
-    }
-    const std::string i = std::to_string(slot);
-    return "probeLookup(probeLight" + i + ", vtkShadowWorldToMap[" + i + "] * vtkShadowPositionWC)";
-  }
-
-  void SetVisibilityUniforms(vtkShaderProgram* program) override
-  {
-    program->SetUniform2i("probeOrigin", this->Origin);
+      if (this->UseCompute)
+      {
+        return "texelFetch(probeScreen, ivec2(gl_FragCoord.xy) - probeOrigin, 0).r";
+      }
+      const std::string i = std::to_string(slot);
+      return "probeLookup(probeLight" + i + ", vtkShadowWorldToMap[" + i +
+        "] * vtkShadowPositionWC)";
+    };
+    code.Uniforms = [this](vtkShaderProgram* program)
+    { program->SetUniform2i("probeOrigin", this->Origin); };
+    return code;
   }
 
   void ReleaseGraphicsResources(vtkWindow* w) override

@@ -139,6 +139,29 @@ with tempfile.TemporaryDirectory() as folder:
     st.check(abs(hard_row["ratio_to_hard"] - 1.0) < 1e-9 and hard_row["size"] == [64, 48],
              "bench: hard's ratio is 1 and the size is the override")
 
+    # A technique's own map_size overrides the scene's; silhouette and
+    # smoothies report the work they time themselves; --debug-view is the
+    # technique's debug_view parameter.
+    own_file = os.path.join(folder, "own_map_size.json")
+    with open(own_file, "w") as f:
+        scene = st.ball_scene(light_radius=0.3, size=(64, 48), map_size=256)
+        scene["shadows"]["smoothies"] = {"map_size": 128}
+        json.dump(scene, f)
+    out = st.run(["bench", own_file, "--techniques", "silhouette,smoothies", "--frames", "2",
+                  "--json"]).stdout
+    rows = {row["technique"]: row for row in map(json.loads, out.splitlines())}
+    st.check(rows["hard"]["map_size"] == 256 and rows["smoothies"]["map_size"] == 128,
+             "bench: smoothies' own map_size 128, hard the scene's 256")
+    st.check("pass_median_ms" in rows["silhouette"] and "cpu_median_ms" in rows["smoothies"]
+             and "pass_median_ms" not in rows["hard"] and "cpu_median_ms" not in rows["hard"],
+             "bench: silhouette's own pass time and smoothies' CPU time, none for hard")
+    debug = os.path.join(folder, "debug.png")
+    st.run(["render", own_file, "--technique", "silhouette", "--debug-view", "--output", debug])
+    st.check(os.path.exists(debug), "--debug-view renders silhouette's distance map")
+    result = st.run(["render", own_file, "--technique", "omni", "--debug-view"], check=False)
+    st.check(result.returncode == 2 and "no debug view" in result.stderr,
+             "--debug-view: omni has none: %r" % result.stderr.strip())
+
     # Progress: on stderr only when it is a terminal (a pseudo-terminal
     # here), one line rewritten in place and cleared at the end; none with
     # --quiet or into a pipe, where stdout is what it always was.

@@ -166,3 +166,40 @@ st.check(catalog.IsAllowed(reference_index, samples, [16.0, 0, 0])
          and not catalog.IsAllowed(contact_index, bias, [math.inf, 0, 0])
          and not catalog.IsAllowed(contact_index, bias, [math.nan, 0, 0]),
          "IsAllowed: 16.5 samples, a boolean 0.5 and an infinite or NaN bias are refused")
+
+# SPECs, parsed by the library for every front end: name[:variant].
+ids = [7, 7]
+st.check(catalog.ParseSpec("contact:multipass", ids)
+         and ids == [contact_index, catalog.FindVariant(contact_index, "multipass")]
+         and catalog.GetSpecProblem("contact:multipass") == "",
+         "ParseSpec('contact:multipass'): %s" % ids)
+st.check(catalog.ParseSpec("smoothies", ids) and ids == [catalog.FindTechnique("smoothies"), -1],
+         "ParseSpec('smoothies'): no variant named, %s" % ids)
+for spec, words in (("raytraced", ["unknown technique 'raytraced'", "aliasfree"]),
+                    ("contact:nope", ["unknown variant 'nope'", "multipass"]),
+                    ("smoothies:soft", ["has none"]), ("", ["unknown technique ''"])):
+    problem = catalog.GetSpecProblem(spec)
+    st.check(not catalog.ParseSpec(spec, ids) and all(w in problem for w in words),
+             "SPEC %r refused: %s" % (spec, problem))
+made = catalog.NewPass("aliasfree:hard")
+st.check(made is not None and made.IsA("vtkAliasFreeShadowPass") and made.GetVariant() == made.Hard,
+         "NewPass('aliasfree:hard') makes the hard variant")
+st.check(catalog.NewPass("contact:nope") is None, "NewPass of a bad SPEC is None")
+
+# map_size, the biases...: every technique's, the framework's own.
+for t, name in enumerate(names):
+    shared = [catalog.GetParameterKey(t, p) for p in range(catalog.GetNumberOfParameters(t))
+              if catalog.IsParameterShared(t, p)]
+    st.check(shared[0] == "map_size" and "normal_bias" in shared and "pcf_radius" not in shared,
+             "%s's shared parameters: %s" % (name, shared))
+aliasfree_index = catalog.FindTechnique("aliasfree")
+st.check(catalog.FindParameter(aliasfree_index, "seed") >= 0, "aliasfree has a seed parameter")
+
+# What the pass says of itself: screen-space receivers, and its own timings.
+uses = {name: catalog.NewPass(t, 0).GetUsesScreenSpace() for t, name in enumerate(names)}
+st.check(uses == {"hard": False, "reference": True, "contact": True, "omni": False,
+                  "silhouette": False, "smoothies": False, "aliasfree": True},
+         "GetUsesScreenSpace: %s" % uses)
+fresh = catalog.NewPass(catalog.FindTechnique("hard"), 0)
+st.check(fresh.GetTechniqueCPUTime() < 0 and fresh.GetTechniqueGPUTime() < 0,
+         "hard times no work of its own")

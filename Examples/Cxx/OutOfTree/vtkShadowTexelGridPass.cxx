@@ -19,11 +19,12 @@ bool vtkShadowTexelGridPass::RenderShadowMaps(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-std::string vtkShadowTexelGridPass::GetVisibilityDeclarations()
+vtkSoftShadowPass::ReceiverCode vtkShadowTexelGridPass::GetReceiverCode()
 {
+  ReceiverCode code;
   // After the framework's receiver code: vtkShadowLookup() and
   // vtkShadowInMap() come from there.
-  return R"(
+  code.Declarations = R"(
 uniform float texelGridContrast;
 
 float vtkTexelGrid(sampler2DShadow map, mat4 worldToMap, vec4 positionWC)
@@ -38,26 +39,21 @@ float vtkTexelGrid(sampler2DShadow map, mat4 worldToMap, vec4 positionWC)
   return lit * (1.0 - texelGridContrast * float((texel.x + texel.y) & 1));
 }
 )";
-}
-
-//------------------------------------------------------------------------------
-std::string vtkShadowTexelGridPass::GetVisibilityExpression(int slot)
-{
-  const auto& light = this->Maps->GetLights()[slot];
-  if (light.Point)
+  code.Visibility = [this](int slot)
   {
-    return this->Superclass::GetVisibilityExpression(slot);
-  }
-  const std::string i = std::to_string(slot);
-  return "vtkTexelGrid(vtkShadowMap[" + std::to_string(light.MapIndex) +
-    "], vtkShadowWorldToMap[" + i + "], vtkShadowReceiver(" + i +
-    ", vtkShadowPositionWC, vtkShadowNormalWC))";
-}
-
-//------------------------------------------------------------------------------
-void vtkShadowTexelGridPass::SetVisibilityUniforms(vtkShaderProgram* program)
-{
-  program->SetUniformf("texelGridContrast", static_cast<float>(this->Contrast));
+    const auto& light = this->Maps->GetLights()[slot];
+    if (light.Point)
+    {
+      return this->GetDefaultVisibility(slot);
+    }
+    const std::string i = std::to_string(slot);
+    return "vtkTexelGrid(vtkShadowMap[" + std::to_string(light.MapIndex) +
+      "], vtkShadowWorldToMap[" + i + "], vtkShadowReceiver(" + i +
+      ", vtkShadowPositionWC, vtkShadowNormalWC))";
+  };
+  code.Uniforms = [this](vtkShaderProgram* program)
+  { program->SetUniformf("texelGridContrast", static_cast<float>(this->Contrast)); };
+  return code;
 }
 
 //------------------------------------------------------------------------------

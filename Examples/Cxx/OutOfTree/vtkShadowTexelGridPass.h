@@ -8,10 +8,10 @@
  *
  * It shows what a technique needs of the framework (docs/architecture.md,
  * "Writing a technique"): the light depth maps drawn by RenderShadowMaps(),
- * a GLSL function of its own (GetVisibilityDeclarations()), the expression
- * that gives each light's visibility (GetVisibilityExpression()) from the
- * framework's receiver code, and its own uniform (SetVisibilityUniforms()).
- * Point lights fall to the framework's own cube lookup, unchecked.
+ * and its receiver code (GetReceiverCode()): a GLSL function of its own,
+ * the expression that gives each light's visibility from the framework's
+ * receiver code, and its own uniform. Point lights fall to the framework's
+ * own cube lookup, unchecked.
  */
 
 #ifndef vtkShadowTexelGridPass_h
@@ -45,9 +45,7 @@ protected:
     traits.PointLights = true;
     return traits;
   }
-  std::string GetVisibilityDeclarations() override;
-  std::string GetVisibilityExpression(int slot) override;
-  void SetVisibilityUniforms(vtkShaderProgram* program) override;
+  ReceiverCode GetReceiverCode() override;
 
   double Contrast = 0.35;
 

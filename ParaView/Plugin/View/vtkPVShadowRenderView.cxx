@@ -31,21 +31,16 @@ void vtkPVShadowRenderView::SetShadowTechnique(const char* spec)
   {
     return;
   }
-  const auto colon = text.find(':');
-  const int technique = Catalog::FindTechnique(text.substr(0, colon).c_str());
-  const int variant = colon == std::string::npos
-    ? -1
-    : Catalog::FindVariant(technique, text.substr(colon + 1).c_str());
-  if (technique < 0 || (colon != std::string::npos && variant < 0))
+  int ids[2];
+  if (!Catalog::ParseSpec(text.c_str(), ids))
   {
-    vtkErrorMacro(<< "ShadowTechnique '" << text
-                  << "' is no technique[:variant] of `softshadows techniques`; the view keeps '"
-                  << this->ShadowTechnique << "'.");
+    vtkErrorMacro(<< "ShadowTechnique: " << Catalog::GetSpecProblem(text.c_str())
+                  << "; the view keeps '" << this->ShadowTechnique << "'.");
     return;
   }
   this->ShadowTechnique = text;
-  this->Technique = technique;
-  this->Variant = variant;
+  this->Technique = ids[0];
+  this->Variant = ids[1];
   this->MakePass();
   this->Modified();
 }

@@ -3,6 +3,7 @@
 // Caster triangles for the alias-free map: world positions for the
 // geometry shader (vtkAliasFreeCastersGS.glsl), which does the projecting;
 // with ALIASFREE_EDGES, edges and their faces' normals.
+// Uses: nothing.
 
 in vec3 vtkShadowVertexMC;
 uniform mat4 vtkShadowModelToWorld;

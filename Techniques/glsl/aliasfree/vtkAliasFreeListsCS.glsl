@@ -17,6 +17,7 @@
 // normal) that faces the light (soft: some point of it): samples facing away
 // are in their own shadow (visibility 0), pixels outside the light's map
 // are lit.
+// Uses: vtkAliasFreeLookup.glsl (the resolve; prepended by the pass).
 
 #if defined(ALIASFREE_SCAN_BLOCKS) || defined(ALIASFREE_SCAN_TOP)
 layout(local_size_x = 256) in;

@@ -12,6 +12,7 @@
 // The mask of a cell is that of the plane at its centre.
 // Used by vtkAliasFreeLookupBuildCS.glsl, vtkAliasFreeCastersFS.glsl and
 // vtkAliasFreeListsCS.glsl (its resolve).
+// Uses: nothing.
 
 // The hemisphere's normals by their octahedral coordinates (no
 // trigonometry): n / (|x| + |y| + z) is a point of the diamond

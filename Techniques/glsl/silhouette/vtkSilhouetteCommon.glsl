@@ -3,6 +3,7 @@
 // Light-space depths shared by the silhouette pass and its receivers
 // (vtkSilhouetteEdgesVS.glsl, vtkSilhouetteLookupFS.glsl). range: near, far,
 // 1 for a parallel (directional) map, 0 for a perspective one.
+// Uses: nothing.
 
 // A map depth in [0, 1] as a distance along the light's axis.
 float silhouetteLinearDepth(vec4 range, float z)

@@ -6,14 +6,15 @@
 // silhouette point's depth) and its lookup texture, which holds four
 // segments side by side (eq. 4), each of silhouetteLookupTexels texels, and
 // one row per penumbra width (section 2.2.1; one row for hard shadows).
-// Uses: vtkSoftShadowReceiverFS.glsl (vtkShadowInMap), declared before it;
+// Uses: vtkShadowNormalOffsetFS.glsl (vtkShadowInMap) and
+// vtkShadowCubeLookupFS.glsl (vtkShadowCubeFace, vtkShadowCubeDirection), which
+// the receivers' shader (vtkSoftShadowReceiverFS.glsl) declares before it;
 // vtkSilhouetteCommon.glsl.
 
 uniform vec4 silhouetteDepthRange[VTK_SHADOW_LIGHTS]; // near, far, 1 if parallel, K
 uniform vec2 silhouetteBand[VTK_SHADOW_LIGHTS]; // W: distances span [-W, W]; Wmax: widest penumbra
 uniform float silhouetteMapSize;
 uniform float silhouetteSpread;     // the three outer samples' distance, in penumbra half-widths
-uniform float silhouetteEdgeBias;   // in map depth: how far in front a silhouette must be
 uniform vec2 silhouetteLookupTexels; // texels per segment, rows
 // Where section 2.2.1's three outer samples lie, in units of their reach.
 const vec2 silhouetteAround[3] = vec2[3](vec2(0.0, 1.0), vec2(-0.8660254, -0.5), vec2(0.8660254, -0.5));
@@ -35,7 +36,7 @@ float silhouettePenumbra(vec4 range, float edge, float z)
 float silhouetteResolve(sampler2D lookup, vec2 edge, float z, float occluded, int i, bool soft,
   out float width)
 {
-  float inFront = edge.y < z - silhouetteEdgeBias ? 1.0 : 0.0; // z_E < z
+  float inFront = edge.y < z ? 1.0 : 0.0; // z_E < z
   // The distance term inset so that filtering never mixes two segments.
   float d = clamp(0.5 + 0.5 * edge.x / silhouetteBand[i].x, 0.0, 1.0);
   d = (0.5 + d * (silhouetteLookupTexels.x - 1.0)) / silhouetteLookupTexels.x;

@@ -7,8 +7,9 @@
 // and the four weighted bilinearly. The point is the framework's receiver
 // point (moved towards the light, vtkShadowNormalOffsetFS.glsl), so lit
 // surfaces pass d <= d_s without a depth bias.
-// Uses: vtkSoftShadowReceiverFS.glsl (vtkShadowInMap), vtkShadowCubeLookupFS.glsl
-// (vtkShadowCubeDirection, vtkShadowCubeFace).
+// Uses: vtkShadowNormalOffsetFS.glsl (vtkShadowInMap) and
+// vtkShadowCubeLookupFS.glsl (vtkShadowCubeDirection, vtkShadowCubeFace), which
+// the receivers' shader (vtkSoftShadowReceiverFS.glsl) declares before it.
 
 uniform float smoothieMapSize;
 

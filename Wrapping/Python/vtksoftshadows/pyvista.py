@@ -79,7 +79,7 @@ import pyvista
 from vtkmodules.vtkCommonCore import vtkCommand
 from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLFXAAPass
 
-from . import vtkHardShadowPass, vtkShadowTechniqueCatalog, vtkSoftShadowPass
+from . import vtkShadowTechniqueCatalog, vtkSoftShadowPass
 
 __all__ = [
     "SoftShadowsCompatibilityError",
@@ -90,17 +90,6 @@ __all__ = [
 
 _CATALOG = vtkShadowTechniqueCatalog
 
-# The techniques whose receivers read screen-space buffers of the viewport's
-# size (vtkSoftShadowPass::Traits::ScreenSpace, protected in C++): they need the
-# scene drawn at the viewport's size and corner. The others (hard, omni,
-# silhouette, smoothies) look up light-space maps only. A technique in neither
-# list is treated as screen space, the cautious side.
-_SCREEN_SPACE = ("contact", "reference", "aliasfree")
-_LIGHT_SPACE = ("hard", "omni", "silhouette", "smoothies")
-
-# map_size, the scene-file key that is not a catalog parameter
-# (docs/scene-format.md): the range vtkSoftShadowPass::SetMapSize() clamps to.
-_MAP_SIZE = (vtkHardShadowPass().GetMapSizeMinValue(), vtkHardShadowPass().GetMapSizeMaxValue())
 
 _STATES = {}  # id(renderer) -> _State
 
@@ -115,6 +104,15 @@ class SoftShadowsCompatibilityError(RuntimeError):
 
 def _technique_names():
     return [_CATALOG.GetTechniqueName(t) for t in range(_CATALOG.GetNumberOfTechniques())]
+
+
+def _light_space_names():
+    """The techniques whose receivers look up light-space maps only: every
+    other one reads screen-space buffers of the viewport's size
+    (vtkSoftShadowPass.GetUsesScreenSpace()), and needs the scene drawn at
+    the viewport's size and corner."""
+    return [_CATALOG.GetTechniqueName(t) for t in range(_CATALOG.GetNumberOfTechniques())
+            if not _CATALOG.NewPass(t, 0).GetUsesScreenSpace()]
 
 
 def _variant_names(technique):
@@ -192,22 +190,12 @@ class _Spec:
             variant = variants[0] if variants else None
         self.variant = variant
         self.variant_index = variants.index(variant) if variant is not None else -1
-        self.screen_space = name in _SCREEN_SPACE or name not in _LIGHT_SPACE
-
-        self.map_size = None
-        if "map_size" in parameters:
-            value = parameters.pop("map_size")
-            size = _number("%s.map_size" % name, value)
-            if not (math.isfinite(size) and size == math.floor(size)
-                    and _MAP_SIZE[0] <= size <= _MAP_SIZE[1]):
-                raise ValueError("%s.map_size = %r is not allowed: a whole number from %d to %d"
-                                 % (name, value, _MAP_SIZE[0], _MAP_SIZE[1]))
-            self.map_size = int(size)
+        self.screen_space = _CATALOG.NewPass(self.index, self.variant_index).GetUsesScreenSpace()
 
         keys = _parameter_keys(self.index)
         unknown = sorted(key for key in parameters if key not in keys)
         if unknown:
-            raise ValueError("technique %r has no parameter%s %s; its parameters: %s, and map_size"
+            raise ValueError("technique %r has no parameter%s %s; its parameters: %s"
                              % (name, "s" if len(unknown) > 1 else "",
                                 ", ".join(repr(k) for k in unknown), ", ".join(keys)))
         self.values = []  # (parameter index, [3 doubles])
@@ -239,8 +227,6 @@ class _Spec:
         made = _CATALOG.NewPass(self.index, self.variant_index)
         if made is None:
             raise RuntimeError("vtkShadowTechniqueCatalog made no pass for %s" % self.label())
-        if self.map_size is not None:
-            made.SetMapSize(self.map_size)
         for parameter, numbers_ in self.values:
             if not _CATALOG.SetParameter(made, self.index, parameter, numbers_):
                 raise RuntimeError("vtkShadowTechniqueCatalog refused %s.%s"
@@ -390,7 +376,7 @@ def _conflict(renderer, passes, spec, ours=None):
                 "%s draws its shadows through screen-space buffers that match the viewport, "
                 "and %s: the two do not line up, and the shadows would lose their soft edges. "
                 "Use a light-space technique (%s) with it, or turn it off%s." % (
-                    spec.label(), mismatch, ", ".join(_LIGHT_SPACE),
+                    spec.label(), mismatch, ", ".join(_light_space_names()),
                     " (FXAA or MSAA anti-aliasing combine with every technique)"
                     if "SSAA" in mismatch else ""))
     return None
@@ -686,8 +672,8 @@ def enable_soft_shadows(plotter, technique="contact", light_radius=None, **param
     **parameters
         The technique's parameters as scene files name them (the keys of
         ``vtkShadowTechniqueCatalog``, e.g. ``dp``, ``pass_limit``,
-        ``pcf_radius``), plus ``map_size`` (texels, 16 to 16384) and
-        ``variant``. Vector parameters take three numbers.
+        ``pcf_radius``, ``map_size``), and ``variant``. Vector parameters
+        take three numbers.
 
     Returns
     -------
