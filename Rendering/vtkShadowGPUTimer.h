@@ -33,6 +33,24 @@ public:
   /// Whether Start() was ever called: what times nothing reads no time.
   bool IsUsed() const { return this->Used; }
 
+  /// Times a stretch for as long as it lives: Start() now, Stop() on every
+  /// way out of the scope.
+  class Scope
+  {
+  public:
+    explicit Scope(vtkShadowGPUTimer& timer)
+      : Timer(timer)
+    {
+      this->Timer.Start();
+    }
+    ~Scope() { this->Timer.Stop(); }
+    Scope(const Scope&) = delete;
+    Scope& operator=(const Scope&) = delete;
+
+  private:
+    vtkShadowGPUTimer& Timer;
+  };
+
   /// Frees the queries; the context must be current.
   void ReleaseGraphicsResources();
 

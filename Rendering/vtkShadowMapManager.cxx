@@ -12,6 +12,7 @@
 #include "vtkShadowLightSize.h"
 #include "vtkShadowParallelMaps.h"
 #include "vtkTextureObject.h"
+#include "vtk_glew.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -352,54 +353,125 @@ vtkShadowMapManager::Frustum vtkShadowMapManager::FitFrustum(
 }
 
 //------------------------------------------------------------------------------
-void vtkShadowMapManager::AllocateDepth(
-  vtkOpenGLRenderWindow* context, vtkSmartPointer<vtkTextureObject>& texture, int size, bool linear)
+vtkShadowTextureSpec vtkShadowTextureSpec::DepthMap(bool linear)
 {
-  vtkTextureObject* map = texture;
-  const int filter = linear ? vtkTextureObject::Linear : vtkTextureObject::Nearest;
-  if (map && map->GetContext() == context && static_cast<int>(map->GetWidth()) == size &&
-    map->GetMagnificationFilter() == filter)
-  {
-    return;
-  }
-  texture = vtkSmartPointer<vtkTextureObject>::New();
-  map = texture;
-  map->SetContext(context);
-  map->SetWrapS(vtkTextureObject::ClampToEdge);
-  map->SetWrapT(vtkTextureObject::ClampToEdge);
-  map->SetMinificationFilter(filter);
-  map->SetMagnificationFilter(filter);
-  map->SetDepthTextureCompare(true);
-  map->SetDepthTextureCompareFunction(vtkTextureObject::Lequal);
-  map->AllocateDepth(size, size, vtkTextureObject::Float32);
+  vtkShadowTextureSpec spec;
+  spec.Type = Format::Depth;
+  spec.Linear = linear;
+  return spec;
 }
 
 //------------------------------------------------------------------------------
-void vtkShadowMapManager::AllocateCube(
-  vtkOpenGLRenderWindow* context, vtkSmartPointer<vtkTextureObject>& texture, int size, bool packed)
+vtkShadowTextureSpec vtkShadowTextureSpec::DistanceCube(bool packed)
 {
-  vtkTextureObject* cube = texture;
-  if (cube && cube->GetContext() == context && static_cast<int>(cube->GetWidth()) == size &&
-    (cube->GetComponents() == 4) == packed)
+  vtkShadowTextureSpec spec;
+  spec.Type = packed ? Format::Byte : Format::Float;
+  spec.Components = packed ? 4 : 1;
+  spec.Cube = true;
+  return spec;
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowTextureSpec::SetFloatFormat(vtkTextureObject* texture, int components)
+{
+  static const unsigned int formats[4][2] = { { GL_R32F, GL_RED }, { GL_RG32F, GL_RG },
+    { GL_RGB32F, GL_RGB }, { GL_RGBA32F, GL_RGBA } };
+  texture->SetInternalFormat(formats[components - 1][0]);
+  texture->SetFormat(formats[components - 1][1]);
+  texture->SetDataType(GL_FLOAT);
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowTextureSpec::operator==(const vtkShadowTextureSpec& other) const
+{
+  return this->Type == other.Type && this->Components == other.Components &&
+    this->Cube == other.Cube && this->Linear == other.Linear && this->Size == other.Size;
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkShadowLightTexture::Get() const
+{
+  return this->Texture;
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowMapManager::Make(vtkShadowLightTexture& texture, const vtkShadowTextureSpec& spec)
+{
+  auto* context = vtkOpenGLRenderWindow::SafeDownCast(
+    this->Renderer ? this->Renderer->GetRenderWindow() : nullptr);
+  const int size = spec.Size > 0 ? spec.Size : this->MapSize;
+  if (texture.Texture && texture.Texture->GetContext() == context && texture.Spec == spec &&
+    texture.Size == size)
   {
     return;
   }
-  texture = vtkSmartPointer<vtkTextureObject>::New();
-  cube = texture;
-  cube->SetContext(context);
-  cube->SetMinificationFilter(vtkTextureObject::Nearest);
-  cube->SetMagnificationFilter(vtkTextureObject::Nearest);
-  cube->SetWrapS(vtkTextureObject::ClampToEdge);
-  cube->SetWrapT(vtkTextureObject::ClampToEdge);
-  cube->SetWrapR(vtkTextureObject::ClampToEdge);
-  if (packed)
+  texture.Spec = spec;
+  texture.Size = size;
+  texture.Texture = vtkSmartPointer<vtkTextureObject>::New();
+  vtkTextureObject* made = texture.Texture;
+  made->SetContext(context);
+  made->SetWrapS(vtkTextureObject::ClampToEdge);
+  made->SetWrapT(vtkTextureObject::ClampToEdge);
+  made->SetWrapR(vtkTextureObject::ClampToEdge);
+  const int filter = spec.Linear ? vtkTextureObject::Linear : vtkTextureObject::Nearest;
+  made->SetMinificationFilter(filter);
+  made->SetMagnificationFilter(filter);
+  if (spec.Type == vtkShadowTextureSpec::Format::Depth)
   {
-    cube->CreateCubeFromRaw(size, size, 4, VTK_UNSIGNED_CHAR, nullptr);
+    made->SetDepthTextureCompare(true);
+    made->SetDepthTextureCompareFunction(vtkTextureObject::Lequal);
+    made->AllocateDepth(size, size, vtkTextureObject::Float32);
+    return;
+  }
+  int type = VTK_UNSIGNED_CHAR;
+  if (spec.Type == vtkShadowTextureSpec::Format::Float)
+  {
+    vtkShadowTextureSpec::SetFloatFormat(made, spec.Components);
+    type = VTK_FLOAT;
+  }
+  if (spec.Cube)
+  {
+    made->CreateCubeFromRaw(size, size, spec.Components, type, nullptr);
   }
   else
   {
-    cube->CreateCubeFromRaw(size, size, 1, VTK_FLOAT, nullptr);
+    made->Allocate2D(size, size, spec.Components, type);
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowMapManager::AllocateCubeMap(Light& light, bool packed)
+{
+  this->Make(light.CubeMap, vtkShadowTextureSpec::DistanceCube(packed));
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowMapManager::AllocateDepthMap(Light& light, bool linear)
+{
+  this->Make(light.DepthMap, vtkShadowTextureSpec::DepthMap(linear));
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkShadowMapManager::GetTexture(
+  Light& light, size_t index, const vtkShadowTextureSpec& spec)
+{
+  if (light.Textures.size() <= index)
+  {
+    light.Textures.resize(index + 1);
+  }
+  this->Make(light.Textures[index], spec);
+  return light.Textures[index];
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkShadowMapManager::GetScratch(size_t index, const vtkShadowTextureSpec& spec)
+{
+  if (this->Scratch.size() <= index)
+  {
+    this->Scratch.resize(index + 1);
+  }
+  this->Make(this->Scratch[index], spec);
+  return this->Scratch[index];
 }
 
 //------------------------------------------------------------------------------
@@ -441,22 +513,26 @@ void vtkShadowMapManager::SetLookupUniforms(vtkShaderProgram* program, const std
 //------------------------------------------------------------------------------
 void vtkShadowMapManager::ReleaseGraphicsResources(vtkWindow* w)
 {
+  auto release = [w](vtkTextureObject* texture)
+  {
+    if (texture)
+    {
+      texture->ReleaseGraphicsResources(w);
+    }
+  };
   for (auto& light : this->Lights)
   {
-    for (vtkTextureObject* map : { light.DepthMap.Get(), light.CubeMap.Get() })
-    {
-      if (map)
-      {
-        map->ReleaseGraphicsResources(w);
-      }
-    }
+    release(light.DepthMap);
+    release(light.CubeMap);
     for (auto& texture : light.Textures)
     {
-      if (texture)
-      {
-        texture->ReleaseGraphicsResources(w);
-      }
+      release(texture);
     }
   }
+  for (auto& texture : this->Scratch)
+  {
+    release(texture);
+  }
   this->Lights.clear();
+  this->Scratch.clear();
 }

@@ -2,13 +2,16 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkShadowMapManager
- * @brief   Owns every shadowed light: its light-space frusta, its maps and
- *          the technique's own per-light textures.
+ * @brief   Owns every shadowed light and every light-space texture: its
+ *          frusta, the framework's maps, the technique's own per-light
+ *          textures and the scratch maps shared by all lights.
  *
  * Part of the framework, data only: Update() decides which lights cast
- * shadows and fits their frusta to the scene; the Allocate methods size
- * their maps. It draws nothing: vtkShadowDrawer does, through these frusta
- * into these maps.
+ * shadows and fits their frusta to the scene. Techniques describe the
+ * textures they need (vtkShadowTextureSpec) and the manager makes them at
+ * the map size, keeps them across frames while the description holds, and
+ * releases them. It draws nothing: vtkShadowDrawer does, through these
+ * frusta into these textures.
  */
 
 #ifndef vtkShadowMapManager_h
@@ -32,6 +35,55 @@ class vtkShaderProgram;
 class vtkShadowParallelMaps;
 class vtkTextureObject;
 class vtkWindow;
+
+/**
+ * A light-space texture described rather than built: what a technique asks
+ * the map manager for (vtkShadowMapManager::GetTexture(), GetScratch()).
+ * Every one clamps to its edges; nearest filtering unless Linear.
+ */
+struct VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowTextureSpec
+{
+  enum class Format
+  {
+    Depth, ///< 32-bit depth compared in lookups (sampler2DShadow); 2D only
+    Float, ///< Components 32-bit float channels
+    Byte,  ///< Components 8-bit channels
+  };
+  Format Type = Format::Float;
+  int Components = 1;
+  bool Cube = false;   ///< a cube map, a point light's six faces
+  bool Linear = false; ///< filtered bilinearly (a depth map: 2x2 PCF in one tap)
+  int Size = 0;        ///< texels on a side; 0: the manager's map size
+
+  /// The framework's depth map of a spot or directional light.
+  static vtkShadowTextureSpec DepthMap(bool linear);
+  /// The framework's distance cube of a point light: squared distances as
+  /// one float, or (`packed`) as RGBA8.
+  static vtkShadowTextureSpec DistanceCube(bool packed);
+  /// Ask for `components` 32-bit float channels, whatever the driver's
+  /// default for the channel count; before the texture is allocated.
+  static void SetFloatFormat(vtkTextureObject* texture, int components);
+  bool operator==(const vtkShadowTextureSpec& other) const;
+  bool operator!=(const vtkShadowTextureSpec& other) const { return !(*this == other); }
+};
+
+/**
+ * A texture the map manager made, with what it was made from: used as a
+ * vtkTextureObject*, null until made.
+ */
+class VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowLightTexture
+{
+public:
+  vtkTextureObject* Get() const;
+  operator vtkTextureObject*() const { return this->Get(); }
+  vtkTextureObject* operator->() const { return this->Get(); }
+
+private:
+  friend class vtkShadowMapManager;
+  vtkSmartPointer<vtkTextureObject> Texture;
+  vtkShadowTextureSpec Spec;
+  int Size = 0;
+};
 
 /// Where a light-space map looks from and what it covers.
 struct VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowFrustum
@@ -74,10 +126,10 @@ public:
     double Attenuation = 1.0;   ///< vtkLight::GetShadowAttenuation()
     glm::dvec3 Position{ 0.0 }; ///< world; for directional lights a point on the axis
     glm::dvec3 Direction{ 0.0, 0.0, -1.0 }; ///< point lights: towards the scene's centre
-    Frustum Map; ///< the light's own (centre) frustum; not for point lights
-    vtkSmartPointer<vtkTextureObject> DepthMap; ///< spot and directional lights
-    std::array<Frustum, 6> Faces;               ///< point lights: +x -x +y -y +z -z
-    vtkSmartPointer<vtkTextureObject> CubeMap;  ///< point lights: squared distances
+    Frustum Map;                    ///< the light's own (centre) frustum; not for point lights
+    vtkShadowLightTexture DepthMap; ///< spot and directional lights
+    std::array<Frustum, 6> Faces;   ///< point lights: +x -x +y -y +z -z
+    vtkShadowLightTexture CubeMap;  ///< point lights: squared distances
     /// The light's width: its diameter (spot, point), or for directional
     /// lights 2 tan(angular radius), the width per unit of distance.
     double GetSize() const;
@@ -88,8 +140,8 @@ public:
     /// (vtkShadowCaster::LightToModel() puts it in a caster's model space).
     glm::dvec4 GetHomogeneous() const;
     /// The technique's own textures for this light (e.g. a distance map),
-    /// kept for the light's slot across frames and released with the maps.
-    std::vector<vtkSmartPointer<vtkTextureObject>> Textures;
+    /// made by GetTexture(), kept for the light's slot across frames.
+    std::vector<vtkShadowLightTexture> Textures;
   };
 
   vtkShadowMapManager();
@@ -150,32 +202,34 @@ public:
    */
   std::array<Frustum, 6> CubeFaces(const glm::dvec3& eye) const;
 
-  /**
-   * Make sure `light.CubeMap` is a `size`^2 cube map, single-channel float or
-   * (`packed`) RGBA8; nearest filtering: it holds distances, not colours.
-   */
-  void AllocateCubeMap(vtkOpenGLRenderWindow* context, Light& light, int size, bool packed)
-  {
-    AllocateCube(context, light.CubeMap, size, packed);
-  }
-
-  /**
-   * Make sure `light.DepthMap` is a `size` x `size` depth texture with
-   * hardware comparison (sampler2DShadow), filtered bilinearly (2x2 PCF in
-   * one tap) when `linear`.
-   */
-  void AllocateDepthMap(vtkOpenGLRenderWindow* context, Light& light, int size, bool linear)
-  {
-    AllocateDepth(context, light.DepthMap, size, linear);
-  }
-
   ///@{
-  /// The same for any texture a technique keeps (say, in Light::Textures).
-  static void AllocateCube(
-    vtkOpenGLRenderWindow* context, vtkSmartPointer<vtkTextureObject>& cube, int size, bool packed);
-  static void AllocateDepth(
-    vtkOpenGLRenderWindow* context, vtkSmartPointer<vtkTextureObject>& map, int size, bool linear);
+  /// Texels on a side of every light-space texture the manager makes,
+  /// unless its spec gives its own size. Default 1024.
+  void SetMapSize(int size) { this->MapSize = size; }
+  int GetMapSize() const { return this->MapSize; }
   ///@}
+
+  /**
+   * Make `light.CubeMap` a cube of squared distances (DistanceCube()) and
+   * `light.DepthMap` a depth map (DepthMap()), unless they already are.
+   * The renderer of the last Update() gives the context.
+   */
+  void AllocateCubeMap(Light& light, bool packed);
+  void AllocateDepthMap(Light& light, bool linear);
+
+  /**
+   * The technique's own texture `index` of `light` (Light::Textures), made
+   * to `spec` unless it already is: kept with the light's slot across
+   * frames, released with the maps.
+   */
+  vtkTextureObject* GetTexture(Light& light, size_t index, const vtkShadowTextureSpec& spec);
+
+  /**
+   * A scratch texture shared by every light, for what a technique draws and
+   * reads light by light (a sample's map, a draw's target): `index` numbers
+   * a technique's own scratch textures.
+   */
+  vtkTextureObject* GetScratch(size_t index, const vtkShadowTextureSpec& spec);
 
   /**
    * Upload what shaders need of a frustum for lookups with normal offset
@@ -206,10 +260,13 @@ public:
 
 private:
   glm::dvec3 SceneCenter() const;
+  void Make(vtkShadowLightTexture& texture, const vtkShadowTextureSpec& spec);
   void Choose(std::vector<Light>& candidates, const Budget& budget);
 
   vtkRenderer* Renderer = nullptr; ///< of the last Update(), not owned
   std::vector<Light> Lights;
+  std::vector<vtkShadowLightTexture> Scratch;
+  int MapSize = 1024;
   int Unshadowed = 0;
   int SkippedPointLights = 0;
   double SceneBounds[6];

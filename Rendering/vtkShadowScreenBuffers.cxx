@@ -14,6 +14,7 @@
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
+#include "vtkShadowMapManager.h"
 #include "vtkShadowMatrices.h"
 #include "vtkShadowVTKVersion.h"
 #include "vtkTextureObject.h"
@@ -163,17 +164,13 @@ void vtkShadowScreenBuffers::DrawQuad(vtkOpenGLQuadHelper* quad,
 vtkSmartPointer<vtkTextureObject> vtkShadowScreenBuffers::NewFloatTexture(
   vtkOpenGLRenderWindow* context, int width, int height, int components)
 {
-  static const unsigned int formats[4][2] = { { GL_R32F, GL_RED }, { GL_RG32F, GL_RG },
-    { GL_RGB32F, GL_RGB }, { GL_RGBA32F, GL_RGBA } };
   auto texture = vtkSmartPointer<vtkTextureObject>::New();
   texture->SetContext(context);
   texture->SetMinificationFilter(vtkTextureObject::Nearest);
   texture->SetMagnificationFilter(vtkTextureObject::Nearest);
   texture->SetWrapS(vtkTextureObject::ClampToEdge);
   texture->SetWrapT(vtkTextureObject::ClampToEdge);
-  texture->SetInternalFormat(formats[components - 1][0]);
-  texture->SetFormat(formats[components - 1][1]);
-  texture->SetDataType(GL_FLOAT);
+  vtkShadowTextureSpec::SetFloatFormat(texture, components);
   texture->Allocate2D(width, height, components, VTK_FLOAT);
   return texture;
 }

@@ -259,14 +259,6 @@ void vtkSoftShadowPass::vtkReceiverStage::PostReplace(vtkShadowShaderSources& so
     if (pass->FrameTraits.ScreenSpace)
     {
       dec << "#define VTK_SHADOW_SCREEN_SPACE\n";
-      if (pass->FrameTraits.GuidedScreenSpace)
-      {
-        dec << "#define VTK_SHADOW_SCREEN_GUIDED\n";
-        if (pass->FrameTraits.RefinedScreenSpace)
-        {
-          dec << "#define VTK_SHADOW_SCREEN_REFINE\n";
-        }
-      }
     }
     dec << vtkShadowSurfaceFS << "\n"
         << vtkSoftShadowPass::GetLightSpaceLookupCode() << vtkSoftShadowReceiverFS << "\n";
@@ -287,6 +279,7 @@ void vtkSoftShadowPass::vtkReceiverStage::PostReplace(vtkShadowShaderSources& so
     {
       impl << "  vtkShadowScreenSetup(vtkShadowPositionWC);\n";
     }
+    impl << pass->FrameReceiverCode.Setup;
     for (size_t slot = 0; slot < count; ++slot)
     {
       const int n = lights[slot].ShaderIndex;
@@ -545,6 +538,7 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
     budget.TextureUnits = this->Parallel->CombineMinimum(budget.TextureUnits);
   }
   budget.UnitsPerLight = this->ReceiverTextures();
+  this->Maps->SetMapSize(this->MapSize);
   this->Maps->Update(renderer, budget, this->Parallel.get());
   this->Casters->SetBuildGlyphInstances(traits.CasterGeometry);
   this->Casters->Update(renderer);
@@ -792,20 +786,19 @@ bool vtkSoftShadowPass::RenderDistanceCube(const vtkRenderState* s,
 //------------------------------------------------------------------------------
 bool vtkSoftShadowPass::RenderLightDepthMaps(const vtkRenderState* s, bool linear)
 {
-  auto* context = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
   this->LinearMaps = linear;
   for (auto& light : this->Maps->GetLights())
   {
     if (light.Point)
     {
-      this->Maps->AllocateCubeMap(context, light, this->MapSize, this->DrawsPackedCubeMaps());
+      this->Maps->AllocateCubeMap(light, this->DrawsPackedCubeMaps());
       if (!this->RenderDistanceCube(s, light.Faces, light.CubeMap))
       {
         return false;
       }
       continue;
     }
-    this->Maps->AllocateDepthMap(context, light, this->MapSize, linear);
+    this->Maps->AllocateDepthMap(light, linear);
     if (!this->RenderDepthMap(s, light.Map, light.DepthMap))
     {
       return false;
@@ -910,29 +903,21 @@ bool vtkSoftShadowPass::IsFirstPointLight(int slot) const
 //------------------------------------------------------------------------------
 std::string vtkSoftShadowPass::GetDefaultVisibility(int slot) const
 {
+  const std::string hard = this->GetHardVisibility(slot);
+  return this->FrameTraits.ScreenSpace
+    ? "vtkShadowScreenVisibility(vtkShadowScreen[" + std::to_string(slot) + "], " + hard + ")"
+    : hard;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkSoftShadowPass::GetHardVisibility(int slot) const
+{
   const auto& light = this->Maps->GetLights()[slot];
-  const std::string i = std::to_string(slot);
   const std::string m = std::to_string(light.MapIndex);
-  const std::string hard = light.Point
+  return light.Point
     ? std::string(this->IsFirstPointLight(slot) ? "vtkShadowCubeHardAll" : "vtkShadowCubeHardOf") +
       "(vtkShadowPositionWC, vtkShadowNormalWC, " + m + ")"
     : this->GetHardLookupExpression(slot, "vtkShadowMap[" + m + "]");
-  if (this->FrameTraits.ScreenSpace)
-  {
-    const std::string screen =
-      "vtkShadowScreenVisibility(vtkShadowScreen[" + i + "], " + hard + ")";
-    if (!this->FrameTraits.GuidedScreenSpace || !this->FrameTraits.RefinedScreenSpace)
-    {
-      return screen;
-    }
-    // Refined in light space where the buffer cannot hold the penumbra.
-    return "vtkShadowScreenRefine(" + screen + ", " +
-      (light.Point ? "vtkShadowCube[" + m + "], vtkShadowCubeCenter[" + m +
-            "], vtkShadowCubeRange[" + m + "]"
-                   : "vtkShadowMap[" + m + "], " + i) +
-      ", vtkShadowPositionWC, vtkShadowNormalWC)";
-  }
-  return hard;
 }
 
 //------------------------------------------------------------------------------

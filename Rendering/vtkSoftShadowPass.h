@@ -363,15 +363,6 @@ protected:
     /// texture (vtkShadowScreenBuffers::BeginVisibility()) or the receivers'
     /// codes directly (vtkShadowScreenBuffers::GetPacked()) in this->Screen.
     bool ScreenSpace = false;
-    /// The screen-space texels carry flags (their own hard shadow's side,
-    /// and the axes along which their penumbra is resolved:
-    /// vtkShadowPackTexel()) that guide the receivers' upsampling by their
-    /// own full-resolution hard shadow (vtkShadowScreenVisibility()).
-    bool GuidedScreenSpace = false;
-    /// Guided receivers also refine, in light space, what the screen-space
-    /// texels could not resolve (vtkShadowScreenRefine(); the texels carry
-    /// their penumbra's width).
-    bool RefinedScreenSpace = false;
     /// Screen-space passes run on buffers this many times smaller than the
     /// viewport on each axis; receivers upsample the result, following
     /// surfaces, and keep their own full-resolution hard shadow where the
@@ -449,6 +440,7 @@ protected:
   struct ReceiverCode
   {
     std::string Declarations;
+    std::string Setup; ///< statements run once a fragment, before any light's visibility
     std::function<std::string(int slot)> Visibility;
     std::vector<ReceiverTexture> Textures;
     std::function<void(vtkShaderProgram*)> Uniforms;
@@ -466,6 +458,10 @@ protected:
    * hard lookup elsewhere.
    */
   std::string GetDefaultVisibility(int slot) const;
+
+  /// GLSL expression for the framework's hard lookup of shadowed light
+  /// `slot` in its own map: a depth map's or a cube map's with GetPCFRadius().
+  std::string GetHardVisibility(int slot) const;
 
   /**
    * GLSL expression for the framework's hard lookup of shadowed light

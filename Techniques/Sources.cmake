@@ -50,6 +50,7 @@ set(softshadows_techniques_shaders
   glsl/contact/vtkContactResolveFS.glsl
   glsl/contact/vtkContactTileSpreadFS.glsl
   glsl/contact/vtkContactTilesFS.glsl
+  glsl/contact/vtkContactUpsampleFS.glsl
   glsl/omni/vtkOmniPoissonFS.glsl
   glsl/reference/vtkReferenceAccumulateFS.glsl
   glsl/silhouette/vtkSilhouetteBandsGS.glsl

@@ -196,6 +196,7 @@ void BuildTriangles(vtkPolyData* data, CasterTriangles& value)
   value.Geometry->SetInput(mesh);
 }
 
+
 // The light's frame across its unit axis: e1 the world's x made
 // perpendicular to it (y when the axis is nearly x), e2 = axis x e1.
 void Basis(const glm::dvec3& axis, glm::dvec3& e1, glm::dvec3& e2)
@@ -240,7 +241,6 @@ struct vtkAliasFreeShadowPass::Internals
   // frames its accumulated visibility holds.
   std::vector<std::vector<double>> Still;
   std::vector<int> History;
-  vtkSmartPointer<vtkTextureObject> Target; // the casters' draw: a map-sized target
   std::string Vertex = WithDefines(vtkAliasFreeCastersVS, "");
   std::string HardGeometry = WithDefines(vtkAliasFreeCastersGS, "");
   std::string HardFragment = WithDefines(vtkAliasFreeCastersFS, "");
@@ -365,16 +365,13 @@ bool vtkAliasFreeShadowPass::RenderShadowMaps(const vtkRenderState* s)
   {
     return true;
   }
-  auto* context = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
   for (auto& light : this->Maps->GetLights())
   {
-    light.Textures.resize(1);
-    const bool drawn = light.Point
-      ? (vtkShadowMapManager::AllocateCube(
-           context, light.Textures[0], this->MapSize, this->PackedCubeMaps),
-          this->RenderDistanceCube(s, light.Faces, light.Textures[0], true))
-      : (vtkShadowMapManager::AllocateDepth(context, light.Textures[0], this->MapSize, false),
-          this->RenderDepthMap(s, light.Map, light.Textures[0], true));
+    const auto spec = light.Point ? vtkShadowTextureSpec::DistanceCube(this->PackedCubeMaps)
+                                  : vtkShadowTextureSpec::DepthMap(false);
+    vtkTextureObject* map = this->Maps->GetTexture(light, 0, spec);
+    const bool drawn = light.Point ? this->RenderDistanceCube(s, light.Faces, map, true)
+                                   : this->RenderDepthMap(s, light.Map, map, true);
     if (!drawn)
     {
       return false;
@@ -386,7 +383,6 @@ bool vtkAliasFreeShadowPass::RenderShadowMaps(const vtkRenderState* s)
 //------------------------------------------------------------------------------
 bool vtkAliasFreeShadowPass::RenderScreenSpace(const vtkRenderState* s)
 {
-  auto* context = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
   this->NumberOfViewSamples = 0;
   this->LongestList = 0;
   if (this->Internal->Failed)
@@ -455,12 +451,6 @@ bool vtkAliasFreeShadowPass::RenderScreenSpace(const vtkRenderState* s)
   Internals::Grow(in.BlocksBuffer, (texels / 1024 + 1) * 4);
   Internals::Grow(in.PixelsBuffer, pixels * 8);
   Internals::Grow(in.SamplesBuffer, pixels * 16);
-  if (!in.Target || in.Target->GetWidth() != static_cast<unsigned int>(this->MapSize))
-  {
-    in.Target = vtkSmartPointer<vtkTextureObject>::New();
-    in.Target->SetContext(context);
-    in.Target->Allocate2D(this->MapSize, this->MapSize, 1, VTK_UNSIGNED_CHAR);
-  }
   in.Lookups.resize(lights.size());
   in.Still.resize(lights.size());
   in.History.resize(lights.size(), 0);
@@ -532,73 +522,141 @@ bool vtkAliasFreeShadowPass::RenderLight(const vtkRenderState* s, int slot)
 }
 
 //------------------------------------------------------------------------------
+// What the stages of one frustum's pass share.
+struct vtkAliasFreeShadowPass::FrustumPass
+{
+  const vtkRenderState* State = nullptr;
+  vtkOpenGLRenderWindow* Context = nullptr;
+  int Slot = 0;
+  bool First = true; ///< a point light's first face: its resolve writes every pixel
+  const vtkShadowMapManager::Light* Light = nullptr;
+  vtkShadowFrustum View;   ///< the light's frustum
+  vtkShadowFrustum Fitted; ///< cropped to the view samples (stage 1)
+  glm::dmat4 WorldToClip{ 1.0 };
+  bool Soft = false;
+  int Words = 0;           ///< 32-bit words of a light-sample mask
+  unsigned int Texels = 0; ///< of the map
+  unsigned int GroupsX = 0, GroupsY = 0;
+  float LightUniform[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+  glm::vec3 Eye{ 0.0f }, Axis{ 0.0f };
+  float Reach = 0.0f;       ///< soft: the light's bounding radius, or tan of its angular radius
+  float Slack = 0.0f;       ///< how far a face may turn from the centre and still see the light
+  float Far = 0.0f;         ///< the farthest view sample
+  unsigned int Samples = 0; ///< view samples listed (stage 2)
+  glm::dvec3 E1{ 0.0 }, E2{ 0.0 }; ///< across the light's axis
+  glm::mat3 ToLight{ 1.0f };       ///< world normals into the light samples' frame (soft)
+  bool Restrict = false;           ///< soft, restricted to silhouette edges' regions
+  int Width = 0, Height = 0;       ///< of the screen-space buffers
+  int MapSize = 0;
+  int PositionsUnit = -1, NormalsUnit = -1; ///< the camera pass's targets
+
+  // Use `program` with the uniforms every stage's compute programs share.
+  void Use(vtkShadowCompute::Program& program, const glm::dmat4& worldToClip) const
+  {
+    program.Use(this->Context);
+    program.SetUniform2i("aliasfreeScreen", this->Width, this->Height);
+    program.SetUniformi("aliasfreeMapSize", this->MapSize);
+    program.SetUniformi("aliasfreeTexels", static_cast<int>(this->Texels));
+    program.SetUniformi("aliasfreePositions", this->PositionsUnit);
+    program.SetUniformi("aliasfreeNormals", this->NormalsUnit);
+    const glm::mat4 m(worldToClip);
+    program.SetUniformMatrix4f("aliasfreeWorldToClip", glm::value_ptr(m));
+    program.SetUniform4f("aliasfreeLight", this->LightUniform);
+    program.SetUniform3f("aliasfreeEye", glm::value_ptr(this->Eye));
+    program.SetUniform3f("aliasfreeAxis", glm::value_ptr(this->Axis));
+    program.SetUniformf("aliasfreeFacingSlack", this->Slack);
+  }
+};
+
+//------------------------------------------------------------------------------
 bool vtkAliasFreeShadowPass::RenderFrustum(
   const vtkRenderState* s, int slot, const vtkShadowFrustum& view, bool first)
 {
-  auto* context = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
-  Internals& in = *this->Internal;
-  const auto& light = this->Maps->GetLights()[slot];
-  const int width = this->Screen->GetWidth(), height = this->Screen->GetHeight();
-  const int mapSize = this->MapSize;
-  const unsigned int texels = static_cast<unsigned int>(mapSize) * mapSize;
-  const bool soft = this->Variant == Soft && light.Radius > 0.0;
-  const int words = soft ? this->NumberOfLightSamples / 32 : 0;
-  vtkTextureObject* positions = this->Screen->GetTexture("aliasfree.positions", 4);
-  vtkTextureObject* normals = this->Screen->GetTexture("aliasfree.normals", 4);
+  FrustumPass pass;
+  this->BeginFrustum(s, slot, view, first, pass);
+  this->FitFrustumToViewSamples(pass);
+  this->BuildLists(pass);
+  this->PrepareLightSamples(pass);
+  if (!this->TestCasters(pass))
+  {
+    return false;
+  }
+  this->Resolve(pass);
+  return true;
+}
 
+//------------------------------------------------------------------------------
+void vtkAliasFreeShadowPass::BeginFrustum(
+  const vtkRenderState* s, int slot, const vtkShadowFrustum& view, bool first, FrustumPass& pass)
+{
+  const auto& light = this->Maps->GetLights()[slot];
+  pass.State = s;
+  pass.Context = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
+  pass.Slot = slot;
+  pass.First = first;
+  pass.Light = &light;
+  pass.View = view;
+  pass.Fitted = view;
+  pass.Texels = static_cast<unsigned int>(this->MapSize) * this->MapSize;
+  pass.Soft = this->Variant == Soft && light.Radius > 0.0;
+  pass.Words = pass.Soft ? this->NumberOfLightSamples / 32 : 0;
+  pass.Width = this->Screen->GetWidth();
+  pass.Height = this->Screen->GetHeight();
+  pass.GroupsX = (pass.Width + 7) / 8;
+  pass.GroupsY = (pass.Height + 7) / 8;
+  pass.MapSize = this->MapSize;
+  pass.PositionsUnit = this->Screen->GetTexture("aliasfree.positions", 4)->GetTextureUnit();
+  pass.NormalsUnit = this->Screen->GetTexture("aliasfree.normals", 4)->GetTextureUnit();
   const glm::dvec3 towards = light.Directional ? -view.Direction : light.Position;
-  const float lightUniform[4] = { static_cast<float>(towards.x), static_cast<float>(towards.y),
-    static_cast<float>(towards.z), light.Directional ? 0.0f : 1.0f };
-  const glm::vec3 eye(view.Eye), axis(view.Direction);
-  const unsigned int groupsX = (width + 7) / 8, groupsY = (height + 7) / 8;
+  pass.LightUniform[0] = static_cast<float>(towards.x);
+  pass.LightUniform[1] = static_cast<float>(towards.y);
+  pass.LightUniform[2] = static_cast<float>(towards.z);
+  pass.LightUniform[3] = light.Directional ? 0.0f : 1.0f;
+  pass.Eye = glm::vec3(view.Eye);
+  pass.Axis = glm::vec3(view.Direction);
   // Soft: the light's reach, its bounding sphere's radius (spot and point
   // lights) or the tangent of its angular radius (directional), and how far
   // a face may turn from its centre and still see some of it.
   const double* scale = this->LightScale;
   const double spread = light.Directional ? light.GetHalfSize() : 0.0;
-  const float reach = !soft
+  pass.Reach = !pass.Soft
     ? 0.0f
     : static_cast<float>(light.Directional ? spread
                                            : light.Radius *
             (this->LightShape == Sphere    ? std::max({ scale[0], scale[1], scale[2] })
                 : this->LightShape == Disc ? std::max(scale[0], scale[1])
                                            : std::sqrt(scale[0] * scale[0] + scale[1] * scale[1])));
-  const float slack =
-    light.Directional ? static_cast<float>(std::sin(std::atan(static_cast<double>(reach)))) : reach;
-  auto common = [&](vtkShadowCompute::Program& program, const glm::dmat4& worldToClip)
-  {
-    program.Use(context);
-    program.SetUniform2i("aliasfreeScreen", width, height);
-    program.SetUniformi("aliasfreeMapSize", mapSize);
-    program.SetUniformi("aliasfreeTexels", static_cast<int>(texels));
-    program.SetUniformi("aliasfreePositions", positions->GetTextureUnit());
-    program.SetUniformi("aliasfreeNormals", normals->GetTextureUnit());
-    const glm::mat4 m(worldToClip);
-    program.SetUniformMatrix4f("aliasfreeWorldToClip", glm::value_ptr(m));
-    program.SetUniform4f("aliasfreeLight", lightUniform);
-    program.SetUniform3f("aliasfreeEye", glm::value_ptr(eye));
-    program.SetUniform3f("aliasfreeAxis", glm::value_ptr(axis));
-    program.SetUniformf("aliasfreeFacingSlack", slack);
-  };
+  pass.Slack = light.Directional
+    ? static_cast<float>(std::sin(std::atan(static_cast<double>(pass.Reach))))
+    : pass.Reach;
+  pass.Restrict = pass.Soft && this->RestrictToSilhouettes;
+  Internals& in = *this->Internal;
   in.CountsBuffer.BindStorage(Counts);
   in.OffsetsBuffer.BindStorage(Offsets);
   in.BlocksBuffer.BindStorage(Blocks);
   in.PixelsBuffer.BindStorage(Pixels);
   in.SamplesBuffer.BindStorage(Samples);
+}
 
+//------------------------------------------------------------------------------
+void vtkAliasFreeShadowPass::FitFrustumToViewSamples(FrustumPass& pass)
+{
   // 1. The view samples' bounds in the light's map (section 4.3).
+  Internals& in = *this->Internal;
+  const vtkShadowFrustum& view = pass.View;
+  const int mapSize = this->MapSize;
   const int initial[8] = { Ordered(2.0f), Ordered(-2.0f), Ordered(2.0f), Ordered(-2.0f),
     Ordered(-VTK_FLOAT_MAX), 0, 0, 0 };
   in.StatsBuffer.Allocate(sizeof initial, initial);
   in.StatsBuffer.BindStorage(Stats);
   const glm::dmat4 lightToClip = view.Projection * view.View;
-  common(in.Bounds, lightToClip);
-  in.Bounds.Dispatch(groupsX, groupsY);
+  pass.Use(in.Bounds, lightToClip);
+  in.Bounds.Dispatch(pass.GroupsX, pass.GroupsY);
   vtkShadowCompute::Barrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   int stats[8];
   in.StatsBuffer.Read(stats, sizeof stats);
-  vtkShadowFrustum fitted = view;
-  const float far = std::max(FromOrdered(stats[4]), static_cast<float>(view.Near));
+  vtkShadowFrustum& fitted = pass.Fitted;
+  pass.Far = std::max(FromOrdered(stats[4]), static_cast<float>(view.Near));
   if (this->FitToViewSamples && stats[0] <= stats[1])
   {
     // Crop the clip space to the bounds, two texels wider on each side.
@@ -619,36 +677,58 @@ bool vtkAliasFreeShadowPass::RenderFrustum(
     fitted.WorldToMap = glm::translate(glm::dmat4(1.0), glm::dvec3(0.5)) *
       glm::scale(glm::dmat4(1.0), glm::dvec3(0.5)) * fitted.Projection * fitted.View;
   }
-  const glm::dmat4 worldToClip = fitted.Projection * fitted.View;
+  pass.WorldToClip = fitted.Projection * fitted.View;
+}
 
+//------------------------------------------------------------------------------
+void vtkAliasFreeShadowPass::BuildLists(FrustumPass& pass)
+{
   // 2. Lists: counts, offsets (prefix sum), samples packed at them.
+  Internals& in = *this->Internal;
+  const glm::dmat4& worldToClip = pass.WorldToClip;
+  const int initial[8] = { Ordered(2.0f), Ordered(-2.0f), Ordered(2.0f), Ordered(-2.0f),
+    Ordered(-VTK_FLOAT_MAX), 0, 0, 0 };
   in.StatsBuffer.Allocate(sizeof initial, initial);
   in.StatsBuffer.BindStorage(Stats);
   in.CountsBuffer.Clear(0);
-  common(in.Count, worldToClip);
-  in.Count.Dispatch(groupsX, groupsY);
+  pass.Use(in.Count, worldToClip);
+  in.Count.Dispatch(pass.GroupsX, pass.GroupsY);
   vtkShadowCompute::Barrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  int stats[8];
   in.StatsBuffer.Read(stats, sizeof stats);
-  const unsigned int samples = static_cast<unsigned int>(stats[6]);
-  this->NumberOfViewSamples += samples;
+  pass.Samples = static_cast<unsigned int>(stats[6]);
+  this->NumberOfViewSamples += pass.Samples;
   this->LongestList = std::max(this->LongestList, stats[5]);
 
-  const unsigned int blocks = (texels + 1023) / 1024;
-  common(in.ScanBlocks, worldToClip);
+  const unsigned int blocks = (pass.Texels + 1023) / 1024;
+  pass.Use(in.ScanBlocks, worldToClip);
   DispatchRows(in.ScanBlocks, blocks);
   vtkShadowCompute::Barrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  common(in.ScanTop, worldToClip);
+  pass.Use(in.ScanTop, worldToClip);
   in.ScanTop.SetUniformi("aliasfreeTexels", static_cast<int>(blocks));
   in.ScanTop.Dispatch(1);
   vtkShadowCompute::Barrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  common(in.ScanAdd, worldToClip);
-  in.ScanAdd.Dispatch((mapSize + 7) / 8, (mapSize + 7) / 8);
+  pass.Use(in.ScanAdd, worldToClip);
+  in.ScanAdd.Dispatch((this->MapSize + 7) / 8, (this->MapSize + 7) / 8);
   vtkShadowCompute::Barrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  common(in.Scatter, worldToClip);
-  in.Scatter.Dispatch(groupsX, groupsY);
+  pass.Use(in.Scatter, worldToClip);
+  in.Scatter.Dispatch(pass.GroupsX, pass.GroupsY);
   vtkShadowCompute::Barrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
 
+//------------------------------------------------------------------------------
+void vtkAliasFreeShadowPass::PrepareLightSamples(FrustumPass& pass)
+{
   // 3. Hidden bits (hard) or masks of light samples (soft), cleared.
+  Internals& in = *this->Internal;
+  const auto& light = *pass.Light;
+  const vtkShadowFrustum& view = pass.View;
+  const bool soft = pass.Soft;
+  const int words = pass.Words;
+  const unsigned int samples = pass.Samples;
+  const int slot = pass.Slot;
+  const double* scale = this->LightScale;
+  const double spread = light.Directional ? light.GetHalfSize() : 0.0;
   Internals::Grow(in.HiddenBuffer,
     std::max<size_t>(soft ? static_cast<size_t>(samples) * words * 4 : (samples / 32 + 1) * 4, 4));
   in.HiddenBuffer.Clear(0);
@@ -658,7 +738,6 @@ bool vtkAliasFreeShadowPass::RenderFrustum(
   glm::dvec3 e1, e2;
   Basis(light.Directional ? -view.Direction : light.Direction, e1, e2);
   const glm::dvec3 e3 = light.Directional ? -view.Direction : light.Direction;
-  glm::mat3 toLight(1.0f);
   if (soft)
   {
     auto& table = in.Lookups[slot];
@@ -714,7 +793,7 @@ bool vtkAliasFreeShadowPass::RenderFrustum(
       table->Masks.Allocate(static_cast<size_t>(cells) * words * 4);
       in.LightSamples.BindStorage(Samples);
       table->Masks.BindStorage(Lookup);
-      in.BuildLookup.Use(context);
+      in.BuildLookup.Use(pass.Context);
       in.BuildLookup.SetUniformi("aliasfreeCells", cells);
       in.BuildLookup.SetUniformi("aliasfreeWords", words);
       DispatchRows(in.BuildLookup, (cells * words + 255) / 256);
@@ -772,139 +851,167 @@ bool vtkAliasFreeShadowPass::RenderFrustum(
         turn = aboutZ(twoPi * uniform(generator));
       }
     }
-    toLight = glm::mat3(glm::transpose(turn) * shape * glm::transpose(frame));
+    pass.ToLight = glm::mat3(glm::transpose(turn) * shape * glm::transpose(frame));
   }
+  pass.E1 = e1;
+  pass.E2 = e2;
+}
 
+//------------------------------------------------------------------------------
+bool vtkAliasFreeShadowPass::TestCasters(FrustumPass& pass)
+{
   // 4. Every caster triangle over the texels it touches (its influence
   // region, soft), testing their samples. Soft, restricted to the
   // silhouettes: first the texels of silhouette edges' influence regions
   // are marked and the centre's hard shadow drawn; triangles then test
   // samples of marked texels only (section 4.3).
-  const bool restrict = soft && this->RestrictToSilhouettes;
-  if (samples > 0)
+  if (pass.Samples == 0)
   {
-    const glm::mat4 clip(worldToClip);
-    const glm::vec3 side0(light.Directional ? e1 : glm::dvec3(0.0)),
-      side1(light.Directional ? e2 : glm::dvec3(0.0));
-    const float epsilon =
-      static_cast<float>(light.Directional ? 1.0e-5 * (view.Far - view.Near) : 1.0e-5);
-    enum class Kind
+    return true;
+  }
+  Internals& in = *this->Internal;
+  const auto& light = *pass.Light;
+  const vtkShadowFrustum& view = pass.View;
+  const bool soft = pass.Soft;
+  const bool restrict = pass.Restrict;
+  const int words = pass.Words;
+  const int mapSize = this->MapSize;
+  const float reach = pass.Reach, far = pass.Far;
+  const glm::vec3 eye = pass.Eye, axis = pass.Axis;
+  const glm::mat3 toLight = pass.ToLight;
+  const float* lightUniform = pass.LightUniform; // read while drawing
+  const glm::mat4 clip(pass.WorldToClip);
+  const glm::vec3 side0(light.Directional ? pass.E1 : glm::dvec3(0.0)),
+    side1(light.Directional ? pass.E2 : glm::dvec3(0.0));
+  const float epsilon =
+    static_cast<float>(light.Directional ? 1.0e-5 * (view.Far - view.Near) : 1.0e-5);
+  enum class Kind
+  {
+    Edges,
+    Hard,
+    Soft
+  };
+  // The casters draw into a scratch map-sized target: they write lists, not colours.
+  vtkShadowTextureSpec target;
+  target.Type = vtkShadowTextureSpec::Format::Byte;
+  vtkTextureObject* scratch = this->Maps->GetScratch(0, target);
+  auto draw = [&](Kind kind)
+  {
+    vtkShadowDrawSetup setup;
+    setup.View = &pass.Fitted;
+    setup.Colours = { scratch };
+    setup.DepthTest = false;
+    setup.Draw = vtkShadowDrawSetup::Props::None;
+    for (const vtkShadowCaster& caster : this->Casters->GetCasters())
     {
-      Edges,
-      Hard,
-      Soft
-    };
-    auto draw = [&](Kind kind)
-    {
-      vtkShadowDrawSetup setup;
-      setup.View = &fitted;
-      setup.Colours = { in.Target };
-      setup.DepthTest = false;
-      setup.Draw = vtkShadowDrawSetup::Props::None;
-      for (const vtkShadowCaster& caster : this->Casters->GetCasters())
+      if (!caster.Faces)
       {
-        if (!caster.Faces)
+        continue;
+      }
+      CasterTriangles& triangles = in.Casters.Get(caster, BuildTriangles);
+      vtkShadowGeometry* geometry =
+        kind == Kind::Edges ? triangles.Edges.get() : triangles.Geometry.get();
+      if (kind == Kind::Edges)
+      {
+        geometry->SetShaders(in.EdgesVertex, in.EdgesFragment, in.EdgesGeometry);
+      }
+      else
+      {
+        geometry->SetShaders(in.Vertex, kind == Kind::Soft ? in.SoftFragment : in.HardFragment,
+          kind == Kind::Soft ? in.SoftGeometry : in.HardGeometry);
+      }
+      const int closed = triangles.Closed ? 1 : 0;
+      // A mirroring placement turns the enclosed volume inside out.
+      const float orientation = glm::determinant(glm::dmat3(caster.ModelToWorld)) < 0.0
+        ? -triangles.Orientation
+        : triangles.Orientation;
+      const glm::mat3 normalToWorld(glm::transpose(glm::inverse(glm::dmat3(caster.ModelToWorld))));
+      setup.Geometry.emplace_back(geometry, caster.ModelToWorld,
+        [=](vtkShaderProgram* program)
         {
-          continue;
-        }
-        CasterTriangles& triangles = in.Casters.Get(caster, BuildTriangles);
-        vtkShadowGeometry* geometry =
-          kind == Kind::Edges ? triangles.Edges.get() : triangles.Geometry.get();
-        if (kind == Kind::Edges)
-        {
-          geometry->SetShaders(in.EdgesVertex, in.EdgesFragment, in.EdgesGeometry);
-        }
-        else
-        {
-          geometry->SetShaders(in.Vertex, kind == Kind::Soft ? in.SoftFragment : in.HardFragment,
-            kind == Kind::Soft ? in.SoftGeometry : in.HardGeometry);
-        }
-        const int closed = triangles.Closed ? 1 : 0;
-        // A mirroring placement turns the enclosed volume inside out.
-        const float orientation = glm::determinant(glm::dmat3(caster.ModelToWorld)) < 0.0
-          ? -triangles.Orientation
-          : triangles.Orientation;
-        const glm::mat3 normalToWorld(
-          glm::transpose(glm::inverse(glm::dmat3(caster.ModelToWorld))));
-        setup.Geometry.emplace_back(geometry, caster.ModelToWorld,
-          [=](vtkShaderProgram* program)
+          program->SetUniformMatrix4x4(
+            "aliasfreeWorldToClip", const_cast<float*>(glm::value_ptr(clip)));
+          program->SetUniform4f("aliasfreeLight", lightUniform);
+          program->SetUniformf("aliasfreeMapSize", static_cast<float>(mapSize));
+          program->SetUniformi("aliasfreeMapTexels", mapSize);
+          program->SetUniformi("aliasfreeClosed", closed);
+          program->SetUniformf("aliasfreeOrientation", orientation);
+          program->SetUniformf("aliasfreeEpsilon", epsilon);
+          if (kind != Kind::Hard)
           {
-            program->SetUniformMatrix4x4(
-              "aliasfreeWorldToClip", const_cast<float*>(glm::value_ptr(clip)));
-            program->SetUniform4f("aliasfreeLight", lightUniform);
-            program->SetUniformf("aliasfreeMapSize", static_cast<float>(mapSize));
-            program->SetUniformi("aliasfreeMapTexels", mapSize);
-            program->SetUniformi("aliasfreeClosed", closed);
-            program->SetUniformf("aliasfreeOrientation", orientation);
-            program->SetUniformf("aliasfreeEpsilon", epsilon);
-            if (kind != Kind::Hard)
-            {
-              program->SetUniformf("aliasfreeReach", reach);
-              program->SetUniform3f("aliasfreeEye", glm::value_ptr(eye));
-              program->SetUniform3f("aliasfreeAxis", glm::value_ptr(axis));
-              program->SetUniform3f("aliasfreeSide0", glm::value_ptr(side0));
-              program->SetUniform3f("aliasfreeSide1", glm::value_ptr(side1));
-              program->SetUniformf("aliasfreeFar", far);
-            }
-            if (kind == Kind::Edges)
-            {
-              program->SetUniformMatrix3x3(
-                "aliasfreeNormalToWorld", const_cast<float*>(glm::value_ptr(normalToWorld)));
-            }
-            if (kind == Kind::Soft)
-            {
-              program->SetUniformMatrix3x3(
-                "aliasfreeToLight", const_cast<float*>(glm::value_ptr(toLight)));
-              program->SetUniformi("aliasfreeWords", words);
-              program->SetUniformi("aliasfreeRestrict", restrict ? 1 : 0);
-            }
-          });
-      }
-      if (!setup.Geometry.empty() && !this->Draw(s, setup))
-      {
-        vtkErrorMacro("aliasfree: drawing the casters into the map failed (its shaders, or its "
-                      "target): drawing without shadows.");
-        in.Failed = true;
-        return false;
-      }
-      vtkShadowCompute::Barrier(GL_SHADER_STORAGE_BARRIER_BIT);
-      return true;
-    };
-    Internals::Grow(in.MarksBuffer, static_cast<size_t>(texels) * 4);
-    in.MarksBuffer.BindStorage(Marks);
-    if (restrict)
-    {
-      in.MarksBuffer.Clear(0);
-      Internals::Grow(in.CentreBuffer, (samples / 32 + 1) * 4);
-      in.CentreBuffer.Clear(0);
-      in.CentreBuffer.BindStorage(Hidden);
-      if (!draw(Kind::Edges) || !draw(Kind::Hard))
-      {
-        return false;
-      }
-      in.HiddenBuffer.BindStorage(Hidden);
+            program->SetUniformf("aliasfreeReach", reach);
+            program->SetUniform3f("aliasfreeEye", glm::value_ptr(eye));
+            program->SetUniform3f("aliasfreeAxis", glm::value_ptr(axis));
+            program->SetUniform3f("aliasfreeSide0", glm::value_ptr(side0));
+            program->SetUniform3f("aliasfreeSide1", glm::value_ptr(side1));
+            program->SetUniformf("aliasfreeFar", far);
+          }
+          if (kind == Kind::Edges)
+          {
+            program->SetUniformMatrix3x3(
+              "aliasfreeNormalToWorld", const_cast<float*>(glm::value_ptr(normalToWorld)));
+          }
+          if (kind == Kind::Soft)
+          {
+            program->SetUniformMatrix3x3(
+              "aliasfreeToLight", const_cast<float*>(glm::value_ptr(toLight)));
+            program->SetUniformi("aliasfreeWords", words);
+            program->SetUniformi("aliasfreeRestrict", restrict ? 1 : 0);
+          }
+        });
     }
-    if (!draw(soft ? Kind::Soft : Kind::Hard))
+    if (!setup.Geometry.empty() && !this->Draw(pass.State, setup))
+    {
+      vtkErrorMacro("aliasfree: drawing the casters into the map failed (its shaders, or its "
+                    "target): drawing without shadows.");
+      in.Failed = true;
+      return false;
+    }
+    vtkShadowCompute::Barrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    return true;
+  };
+  Internals::Grow(in.MarksBuffer, static_cast<size_t>(pass.Texels) * 4);
+  in.MarksBuffer.BindStorage(Marks);
+  if (restrict)
+  {
+    in.MarksBuffer.Clear(0);
+    Internals::Grow(in.CentreBuffer, (pass.Samples / 32 + 1) * 4);
+    in.CentreBuffer.Clear(0);
+    in.CentreBuffer.BindStorage(Hidden);
+    if (!draw(Kind::Edges) || !draw(Kind::Hard))
     {
       return false;
     }
+    in.HiddenBuffer.BindStorage(Hidden);
   }
+  if (!draw(soft ? Kind::Soft : Kind::Hard))
+  {
+    return false;
+  }
+  return true;
+}
 
+//------------------------------------------------------------------------------
+void vtkAliasFreeShadowPass::Resolve(FrustumPass& pass)
+{
   // 5. Each pixel's visibility, for the receivers.
+  Internals& in = *this->Internal;
+  const int slot = pass.Slot;
+  const bool soft = pass.Soft;
   vtkTextureObject* visibility = this->Screen->GetVisibility(slot);
-  const double* camera = s->GetRenderer()->GetActiveCamera()->GetPosition();
+  const double* camera = pass.State->GetRenderer()->GetActiveCamera()->GetPosition();
   const float cameraPosition[3] = { static_cast<float>(camera[0]), static_cast<float>(camera[1]),
     static_cast<float>(camera[2]) };
-  common(in.Resolve, worldToClip);
-  in.Resolve.SetUniformi("aliasfreeWords", words);
-  in.Resolve.SetUniformi("aliasfreeRestrict", restrict ? 1 : 0);
-  in.Resolve.SetUniformi("aliasfreeListedOnly", first ? 0 : 1);
-  in.Resolve.SetUniformMatrix3f("aliasfreeToLight", glm::value_ptr(toLight));
+  pass.Use(in.Resolve, pass.WorldToClip);
+  in.Resolve.SetUniformi("aliasfreeWords", pass.Words);
+  in.Resolve.SetUniformi("aliasfreeRestrict", pass.Restrict ? 1 : 0);
+  in.Resolve.SetUniformi("aliasfreeListedOnly", pass.First ? 0 : 1);
+  in.Resolve.SetUniformMatrix3f("aliasfreeToLight", glm::value_ptr(pass.ToLight));
   if (soft)
   {
     in.Lookups[slot]->Masks.BindStorage(Lookup);
   }
-  if (restrict)
+  if (pass.Restrict)
   {
     in.MarksBuffer.BindStorage(Marks);
     in.CentreBuffer.BindStorage(Centre);
@@ -919,9 +1026,8 @@ bool vtkAliasFreeShadowPass::RenderFrustum(
       this->Screen->GetTexture("aliasfree.history" + std::to_string(slot), 4);
     vtkShadowCompute::BindImage(1, history, GL_READ_WRITE, GL_RGBA32F);
   }
-  in.Resolve.Dispatch(groupsX, groupsY);
+  in.Resolve.Dispatch(pass.GroupsX, pass.GroupsY);
   vtkShadowCompute::Barrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -987,11 +1093,6 @@ void vtkAliasFreeShadowPass::ReleaseGraphicsResources(vtkWindow* w)
     buffer->Release();
   }
   in.Lookups.clear();
-  if (in.Target)
-  {
-    in.Target->ReleaseGraphicsResources(w);
-    in.Target = nullptr;
-  }
   in.Failed = false;
 }
 

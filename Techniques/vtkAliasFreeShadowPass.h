@@ -239,7 +239,16 @@ private:
   struct Internals;
   std::unique_ptr<Internals> Internal;
   bool RenderLight(const vtkRenderState* s, int slot);
+  // One frustum (a light's, or a cube face's) in the paper's stages.
+  struct FrustumPass;
   bool RenderFrustum(const vtkRenderState* s, int slot, const vtkShadowFrustum& view, bool first);
+  void BeginFrustum(
+    const vtkRenderState* s, int slot, const vtkShadowFrustum& view, bool first, FrustumPass& pass);
+  void FitFrustumToViewSamples(FrustumPass& pass);
+  void BuildLists(FrustumPass& pass);
+  void PrepareLightSamples(FrustumPass& pass);
+  bool TestCasters(FrustumPass& pass);
+  void Resolve(FrustumPass& pass);
 };
 
 #endif

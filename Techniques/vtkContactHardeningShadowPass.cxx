@@ -25,6 +25,7 @@
 #include "vtkContactResolveFS.h"
 #include "vtkContactTileSpreadFS.h"
 #include "vtkContactTilesFS.h"
+#include "vtkContactUpsampleFS.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -157,10 +158,42 @@ vtkSoftShadowPass::Traits vtkContactHardeningShadowPass::GetTraits() const
   traits.PointLights = true;
   traits.Samplers = true; // the distance map reads the light's depths raw
   traits.ScreenSpace = true;
-  traits.GuidedScreenSpace = true;
-  traits.RefinedScreenSpace = this->RefineUnresolved;
   traits.ScreenResolutionDivisor = this->ResolutionDivisor;
   return traits;
+}
+
+//------------------------------------------------------------------------------
+vtkSoftShadowPass::ReceiverCode vtkContactHardeningShadowPass::GetReceiverCode()
+{
+  // The screen-space visibility upsampled, guided by each fragment's own
+  // hard shadow; with RefineUnresolved what it could not resolve is
+  // filtered again in light space (vtkContactUpsampleFS.glsl).
+  ReceiverCode code;
+  const bool refine = this->RefineUnresolved;
+  code.Declarations =
+    std::string("#define CONTACT_REFINE ") + (refine ? "1\n" : "0\n") + vtkContactUpsampleFS;
+  if (refine)
+  {
+    code.Setup = "  vtkContactScreenSetup(vtkShadowPositionWC);\n";
+  }
+  code.Visibility = [this, refine](int slot)
+  {
+    const auto& light = this->Maps->GetLights()[slot];
+    const std::string i = std::to_string(slot);
+    const std::string m = std::to_string(light.MapIndex);
+    const std::string screen = "vtkContactScreenVisibility(vtkShadowScreen[" + i + "], " +
+      this->GetHardVisibility(slot) + ")";
+    if (!refine)
+    {
+      return screen;
+    }
+    return "vtkContactRefine(" + screen + ", " +
+      (light.Point ? "vtkShadowCube[" + m + "], vtkShadowCubeCenter[" + m +
+            "], vtkShadowCubeRange[" + m + "]"
+                   : "vtkShadowMap[" + m + "], " + i) +
+      ", vtkShadowPositionWC, vtkShadowNormalWC)";
+  };
+  return code;
 }
 
 //------------------------------------------------------------------------------

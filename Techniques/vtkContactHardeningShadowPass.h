@@ -225,6 +225,7 @@ protected:
   bool RenderShadowMaps(const vtkRenderState* s) override;
   bool RenderScreenSpace(const vtkRenderState* s) override;
   Traits GetTraits() const override;
+  ReceiverCode GetReceiverCode() override;
   ///@{
   /// The camera pass's code for this batch of lights: each light's distance
   /// map (pass 2, section 3.2), from the geometry's own position and normal.

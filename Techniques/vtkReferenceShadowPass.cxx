@@ -40,8 +40,7 @@ class vtkReferenceShadowPass::vtkInternals
 {
 public:
   std::unique_ptr<vtkOpenGLQuadHelper> Accumulate, AccumulateCube;
-  vtkShadowMapManager::Light Sample; // owns the scratch maps of one light sample
-  int NormalsUnit = -1;              // the camera pass's normals, while accumulating
+  int NormalsUnit = -1; // the camera pass's normals, while accumulating
 };
 
 vtkStandardNewMacro(vtkReferenceShadowPass);
@@ -172,24 +171,23 @@ bool vtkReferenceShadowPass::AccumulateSample(const vtkRenderState* s, int slot,
   auto* context = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
   vtkOpenGLState* state = context->GetState();
   vtkInternals& internals = *this->Internals;
-  vtkShadowMapManager::Light& sample = internals.Sample;
 
+  // The sample's map, a scratch map every light's samples draw in turn.
   vtkShadowMapManager::Frustum frustum;
+  std::array<vtkShadowMapManager::Frustum, 6> faces;
   vtkTextureObject* map = nullptr;
   if (light.Point)
   {
-    this->Maps->AllocateCubeMap(context, sample, this->MapSize, this->PackedCubeMaps);
-    map = sample.CubeMap;
-    sample.Faces = this->Maps->CubeFaces(eye);
-    if (!this->RenderDistanceCube(s, sample.Faces, map))
+    map = this->Maps->GetScratch(0, vtkShadowTextureSpec::DistanceCube(this->PackedCubeMaps));
+    faces = this->Maps->CubeFaces(eye);
+    if (!this->RenderDistanceCube(s, faces, map))
     {
       return false;
     }
   }
   else
   {
-    this->Maps->AllocateDepthMap(context, sample, this->MapSize, false);
-    map = sample.DepthMap;
+    map = this->Maps->GetScratch(1, vtkShadowTextureSpec::DepthMap(false));
     frustum = this->Maps->FitFrustum(light, eye, direction);
     if (!this->RenderDepthMap(s, frustum, map))
     {
@@ -208,8 +206,7 @@ bool vtkReferenceShadowPass::AccumulateSample(const vtkRenderState* s, int slot,
       [&](vtkShaderProgram* program)
       {
         program->SetUniformi("referenceCube", map->GetTextureUnit());
-        vtkShadowMapManager::SetCubeUniforms(
-          program, "reference", "", sample.Faces, this->PackedCubeMaps);
+        vtkShadowMapManager::SetCubeUniforms(program, "reference", "", faces, this->PackedCubeMaps);
         vtkShadowMapManager::SetLookupUniforms(
           program, "reference", this->MapSize, this->NormalBias, this->DistanceBias);
         program->SetUniformf("referenceWeight", weight);
@@ -239,14 +236,6 @@ void vtkReferenceShadowPass::ReleaseGraphicsResources(vtkWindow* w)
   this->Superclass::ReleaseGraphicsResources(w);
   this->Internals->Accumulate.reset();
   this->Internals->AccumulateCube.reset();
-  for (auto* map : { &this->Internals->Sample.DepthMap, &this->Internals->Sample.CubeMap })
-  {
-    if (*map)
-    {
-      (*map)->ReleaseGraphicsResources(w);
-    }
-    *map = nullptr;
-  }
 }
 
 //------------------------------------------------------------------------------

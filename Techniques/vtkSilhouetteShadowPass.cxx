@@ -107,7 +107,10 @@ struct vtkSilhouetteShadowPass::Internals
     float Range[4] = { 0.0f, 1.0f, 0.0f, 0.0f }; ///< near, far, parallel, K
     float HalfWidth = 1.0f;                      ///< W: distances kept within it
     float MaximumPenumbra = 1.0f;                ///< Wmax
-    std::vector<double> LookupKey;               ///< what the slot's lookup was built for
+    /// The lookup table (Section 2.2.2's falloff across the band) and what
+    /// it was built for.
+    vtkSmartPointer<vtkTextureObject> Lookup;
+    std::vector<double> LookupKey;
   };
   std::vector<Band> Bands;
   vtkShadowCasterCache<CasterMesh> Meshes;
@@ -233,7 +236,7 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
   }
   this->Internal->Meshes.Prune(*this->Casters);
 
-  this->TechniqueTimer.Start();
+  vtkShadowGPUTimer::Scope timing(this->TechniqueTimer); // pass 2, on every way out
   auto& bands = this->Internal->Bands;
   bands.resize(lights.size());
   for (size_t slot = 0; slot < lights.size(); ++slot)
@@ -263,51 +266,28 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
       : 2.0 * std::max<double>(soft ? band.MaximumPenumbra : 0.0, 1.0);
     band.HalfWidth = static_cast<float>(0.5 * expected + Diagonal);
 
-    // The slot's textures: the silhouette map and the lookup.
-    if (light.Textures.size() < 2)
-    {
-      light.Textures.resize(2);
-    }
-    const unsigned int target = light.Point ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
-    if (!light.Textures[0] ||
-      light.Textures[0]->GetWidth() != static_cast<unsigned>(this->MapSize) ||
-      light.Textures[0]->GetTarget() != target)
-    {
-      if (light.Point)
-      {
-        light.Textures[0] = vtkSmartPointer<vtkTextureObject>::New();
-        light.Textures[0]->SetContext(context);
-        light.Textures[0]->SetWrapS(vtkTextureObject::ClampToEdge);
-        light.Textures[0]->SetWrapT(vtkTextureObject::ClampToEdge);
-        light.Textures[0]->SetWrapR(vtkTextureObject::ClampToEdge);
-        light.Textures[0]->CreateCubeFromRaw(this->MapSize, this->MapSize, 2, VTK_FLOAT, nullptr);
-      }
-      else
-      {
-        light.Textures[0] =
-          vtkShadowScreenBuffers::NewFloatTexture(context, this->MapSize, this->MapSize, 2);
-      }
-      light.Textures[0]->SetMinificationFilter(vtkTextureObject::Linear);
-      light.Textures[0]->SetMagnificationFilter(vtkTextureObject::Linear);
-    }
+    // The slot's silhouette map, and its lookup, built again when its band changed.
+    vtkShadowTextureSpec spec;
+    spec.Components = 2;
+    spec.Cube = light.Point;
+    spec.Linear = true;
+    vtkTextureObject* distances = this->Maps->GetTexture(light, 0, spec);
     const int rows = soft ? this->LookupRows : 1;
     const double spread = soft ? this->SampleSpread : 0.0;
     const std::vector<double> key = { static_cast<double>(this->LookupTexels),
       static_cast<double>(rows), band.HalfWidth, band.MaximumPenumbra, this->EdgeWidth, spread };
-    if (!light.Textures[1] || band.LookupKey != key)
+    if (!band.Lookup || band.LookupKey != key)
     {
       std::vector<float> lookup = BuildLookup(
         this->LookupTexels, rows, band.HalfWidth, band.MaximumPenumbra, this->EdgeWidth, spread);
-      light.Textures[1] = vtkSmartPointer<vtkTextureObject>::New();
-      light.Textures[1]->SetContext(context);
-      light.Textures[1]->SetMinificationFilter(vtkTextureObject::Linear);
-      light.Textures[1]->SetMagnificationFilter(vtkTextureObject::Linear);
-      light.Textures[1]->SetWrapS(vtkTextureObject::ClampToEdge);
-      light.Textures[1]->SetWrapT(vtkTextureObject::ClampToEdge);
-      light.Textures[1]->SetInternalFormat(GL_R32F);
-      light.Textures[1]->SetFormat(GL_RED);
-      light.Textures[1]->SetDataType(GL_FLOAT);
-      light.Textures[1]->Create2DFromRaw(4 * this->LookupTexels, rows, 1, VTK_FLOAT, lookup.data());
+      band.Lookup = vtkSmartPointer<vtkTextureObject>::New();
+      band.Lookup->SetContext(context);
+      band.Lookup->SetMinificationFilter(vtkTextureObject::Linear);
+      band.Lookup->SetMagnificationFilter(vtkTextureObject::Linear);
+      band.Lookup->SetWrapS(vtkTextureObject::ClampToEdge);
+      band.Lookup->SetWrapT(vtkTextureObject::ClampToEdge);
+      vtkShadowTextureSpec::SetFloatFormat(band.Lookup, 1);
+      band.Lookup->Create2DFromRaw(4 * this->LookupTexels, rows, 1, VTK_FLOAT, lookup.data());
       band.LookupKey = key;
     }
 
@@ -320,7 +300,7 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
       setup.View = nullptr;
       setup.Faces = &light.Faces;
     }
-    setup.Colours = { light.Textures[0] };
+    setup.Colours = { distances };
     setup.ClearColour[0] = ClearDistance;
     setup.ClearColour[1] = 1.0f;
     setup.Draw = vtkShadowDrawSetup::Props::None;
@@ -375,14 +355,15 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
       return false;
     }
   }
-  this->TechniqueTimer.Stop();
 
+  // Uploaded as they were first drawn.
   this->TopologyAwareMeshBytes = 0;
   for (const auto& mesh : meshes)
   {
     this->TopologyAwareMeshBytes += mesh.second->GetUploadedBytes();
     this->TopologyAwareMeshVertices += mesh.second->GetNumberOfVertices();
   }
+
   return true;
 }
 
@@ -398,7 +379,8 @@ vtkSoftShadowPass::ReceiverCode vtkSilhouetteShadowPass::GetReceiverCode()
     const std::string i = std::to_string(slot);
     code.Textures.push_back({ "silhouetteDistances" + i,
       lights[slot].Point ? "samplerCube" : "sampler2D", lights[slot].Textures[0] });
-    code.Textures.push_back({ "silhouetteLookup" + i, "sampler2D", lights[slot].Textures[1] });
+    code.Textures.push_back(
+      { "silhouetteLookup" + i, "sampler2D", this->Internal->Bands[slot].Lookup });
   }
   code.Visibility = [this](int slot) { return this->GetVisibility(slot); };
   code.Uniforms = [this](vtkShaderProgram* program)
@@ -463,6 +445,11 @@ void vtkSilhouetteShadowPass::ReleaseGraphicsResources(vtkWindow* w)
   this->Internal->Meshes.Clear();
   for (auto& band : this->Internal->Bands)
   {
+    if (band.Lookup)
+    {
+      band.Lookup->ReleaseGraphicsResources(w);
+    }
+    band.Lookup = nullptr;
     band.LookupKey.clear();
   }
 }

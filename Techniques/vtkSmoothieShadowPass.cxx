@@ -414,7 +414,6 @@ vtkSoftShadowPass::Traits vtkSmoothieShadowPass::GetTraits() const
 //------------------------------------------------------------------------------
 bool vtkSmoothieShadowPass::RenderShadowMaps(const vtkRenderState* s)
 {
-  auto* context = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
   auto& lights = this->Maps->GetLights();
 
   // Each caster's silhouette edges for each light, found again only when
@@ -469,16 +468,12 @@ bool vtkSmoothieShadowPass::RenderShadowMaps(const vtkRenderState* s)
   for (size_t slot = 0; slot < lights.size(); ++slot)
   {
     auto& light = lights[slot];
-    if (light.Textures.size() < 2)
-    {
-      light.Textures.resize(2);
-    }
     // 1. The shadow map: linear depths, the nearest kept by MIN blending; a
     // point light's: the framework's squared distances.
     vtkTextureObject* receivers = nullptr;
     if (light.Point)
     {
-      this->Maps->AllocateCubeMap(context, light, this->MapSize, false);
+      this->Maps->AllocateCubeMap(light, false);
       if (!this->RenderDistanceCube(s, light.Faces, light.CubeMap))
       {
         return false;
@@ -487,14 +482,10 @@ bool vtkSmoothieShadowPass::RenderShadowMaps(const vtkRenderState* s)
     }
     else
     {
-      auto& depths = light.Textures[0];
-      if (!depths || depths->GetWidth() != static_cast<unsigned>(this->MapSize))
-      {
-        depths = vtkShadowScreenBuffers::NewFloatTexture(context, this->MapSize, this->MapSize, 1);
-      }
+      receivers = this->Maps->GetTexture(light, 0, vtkShadowTextureSpec());
       vtkShadowDrawSetup setup;
       setup.View = &light.Map;
-      setup.Colours = { depths };
+      setup.Colours = { receivers };
       std::fill(setup.ClearColour, setup.ClearColour + 4, Far);
       setup.Blend = vtkShadowDrawSetup::Blending::Min;
       setup.DepthTest = false;
@@ -504,31 +495,13 @@ bool vtkSmoothieShadowPass::RenderShadowMaps(const vtkRenderState* s)
       {
         return false;
       }
-      receivers = depths;
     }
 
     // 2. The smoothie buffer: depth and alpha', MIN blended.
-    auto& buffer = light.Textures[1];
-    const unsigned int target = light.Point ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
-    if (!buffer || buffer->GetWidth() != static_cast<unsigned>(this->MapSize) ||
-      buffer->GetTarget() != target)
-    {
-      if (light.Point)
-      {
-        buffer = vtkSmartPointer<vtkTextureObject>::New();
-        buffer->SetContext(context);
-        buffer->SetWrapS(vtkTextureObject::ClampToEdge);
-        buffer->SetWrapT(vtkTextureObject::ClampToEdge);
-        buffer->SetWrapR(vtkTextureObject::ClampToEdge);
-        buffer->SetMinificationFilter(vtkTextureObject::Nearest);
-        buffer->SetMagnificationFilter(vtkTextureObject::Nearest);
-        buffer->CreateCubeFromRaw(this->MapSize, this->MapSize, 2, VTK_FLOAT, nullptr);
-      }
-      else
-      {
-        buffer = vtkShadowScreenBuffers::NewFloatTexture(context, this->MapSize, this->MapSize, 2);
-      }
-    }
+    vtkShadowTextureSpec bufferSpec;
+    bufferSpec.Components = 2;
+    bufferSpec.Cube = light.Point;
+    vtkTextureObject* buffer = this->Maps->GetTexture(light, 1, bufferSpec);
 
     // The thickness in screen units (2 across the map): fixed, or K for
     // the outer penumbra's width, R (1/b - 1/r) over a texel's width per unit

@@ -229,14 +229,20 @@ TechniqueSpec ParseTechniqueSpec(const std::string& text, const std::string& whe
     return { "vtk", "" }; // VTK's own pass: the one technique outside the catalog
   }
   int ids[2] = { -1, -1 };
-  if (!Catalog::ParseSpec(text.c_str(), ids))
+  if (!Catalog::ParseSpec(text.c_str(), ids) && ids[0] >= 0)
   {
-    std::string problem = Catalog::GetSpecProblem(text.c_str());
-    if (ids[0] < 0)
+    throw InputError(where, Catalog::GetSpecProblem(text.c_str())); // the variant
+  }
+  if (ids[0] < 0)
+  {
+    // The catalog's techniques and VTK's own pass.
+    std::string known;
+    for (int i = 0; i < Catalog::GetNumberOfTechniques(); ++i)
     {
-      problem.insert(problem.size() - 1, ", vtk");
+      known += std::string(Catalog::GetTechniqueName(i)) + ", ";
     }
-    throw InputError(where, problem);
+    throw InputError(where,
+      "unknown technique '" + text.substr(0, text.find(':')) + "' (known: " + known + "vtk)");
   }
   return { Catalog::GetTechniqueName(ids[0]),
     ids[1] < 0 ? std::string() : Catalog::GetVariantName(ids[0], ids[1]) };

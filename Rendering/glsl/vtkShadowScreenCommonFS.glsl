@@ -18,7 +18,7 @@ uniform vec3 vtkShadowCameraPosition;
 // (255: not valid), plus 2^19 times its penumbra's width
 // (vtkShadowWidthCode()), negative where the texel's own hard shadow is lit:
 // techniques whose receivers are guided by their own hard shadow
-// (VTK_SHADOW_SCREEN_GUIDED, vtkSoftShadowReceiverFS.glsl) give them as
+// (contact: vtkContactUpsampleFS.glsl) give them as
 // g = 1 + lit + 2 * width on valid texels. A receiver's bilinear lookup then
 // gathers the four codes around it in one fetch (textureGather) instead of
 // fetching four texels, and tells the sides apart with one comparison.

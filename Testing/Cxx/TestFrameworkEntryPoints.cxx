@@ -217,11 +217,9 @@ protected:
     for (size_t slot = 0; slot < lights.size(); ++slot)
     {
       auto& light = lights[slot];
-      if (light.Textures.empty())
-      {
-        light.Textures.push_back(
-          vtkShadowScreenBuffers::NewFloatTexture(context, TargetSize, TargetSize, 1));
-      }
+      vtkShadowTextureSpec spec;
+      spec.Size = TargetSize;
+      vtkTextureObject* target = this->Maps->GetTexture(light, 0, spec);
       if (this->Geometry.size() <= slot)
       {
         this->Geometry.emplace_back(new vtkShadowGeometry);
@@ -234,7 +232,7 @@ protected:
 
       vtkShadowDrawSetup setup;
       setup.View = &light.Map;
-      setup.Colours = { light.Textures[0] };
+      setup.Colours = { target };
       std::fill(setup.ClearColour, setup.ClearColour + 4, 1.0f);
       setup.Blend = vtkShadowDrawSetup::Blending::Min;
       setup.DepthTest = false;
@@ -246,9 +244,9 @@ protected:
       }
       std::vector<float>& texels = this->LightTexels[slot];
       texels.resize(TargetSize * TargetSize);
-      light.Textures[0]->Bind();
+      target->Bind();
       glGetTexImage(GL_TEXTURE_2D, 0, GL_RED, GL_FLOAT, texels.data());
-      light.Textures[0]->Deactivate();
+      target->Deactivate();
     }
     return true;
   }

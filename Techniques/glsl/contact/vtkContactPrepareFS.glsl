@@ -22,7 +22,7 @@ uniform int contactTileSize;
 uniform float contactSmallestD;
 
 #if CONTACT_WIDTHS
-// Compiled in for receivers that refine (vtkShadowScreenRefine()): the
+// Compiled in for receivers that refine (vtkContactRefine(), vtkContactUpsampleFS.glsl): the
 // penumbra's width in pixels on the receiver for a D, coded with the
 // pixel. A kernel's (clamped to the maximum), or, counting multi-pass
 // blurs, 4 sigma of their summed variances (contactPassVariances[k]: that
