@@ -23,6 +23,7 @@
 #include "vtkShadowDrawer.h"
 #include "vtkShadowGeometry.h"
 #include "vtkShadowMapManager.h"
+#include "vtkShadowMatrices.h"
 #include "vtkShadowSampling.h"
 #include "vtkShadowScreenBuffers.h"
 #include "vtkShadowVTKVersion.h"
@@ -194,17 +195,6 @@ void BuildTriangles(vtkPolyData* data, CasterTriangles& value)
   value.Orientation = volume < 0.0 ? -1.0f : 1.0f;
   value.Geometry = vtkShadowGeometry::NewShared();
   value.Geometry->SetInput(mesh);
-}
-
-
-// The light's frame across its unit axis: e1 the world's x made
-// perpendicular to it (y when the axis is nearly x), e2 = axis x e1.
-void Basis(const glm::dvec3& axis, glm::dvec3& e1, glm::dvec3& e2)
-{
-  const glm::dvec3 helper =
-    std::abs(axis.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0);
-  e1 = glm::normalize(helper - glm::dot(helper, axis) * axis);
-  e2 = glm::cross(axis, e1);
 }
 
 // One light's lookup table and what it was built for.
@@ -736,7 +726,7 @@ void vtkAliasFreeShadowPass::PrepareLightSamples(FrustumPass& pass)
 
   // The light's samples and lookup table (soft), built when they change.
   glm::dvec3 e1, e2;
-  Basis(light.Directional ? -view.Direction : light.Direction, e1, e2);
+  vtkShadowMatrices::Basis(light.Directional ? -view.Direction : light.Direction, e1, e2);
   const glm::dvec3 e3 = light.Directional ? -view.Direction : light.Direction;
   if (soft)
   {

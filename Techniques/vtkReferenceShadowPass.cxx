@@ -11,6 +11,7 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkShadowMapManager.h"
+#include "vtkShadowMatrices.h"
 #include "vtkShadowSampling.h"
 #include "vtkShadowScreenBuffers.h"
 #include "vtkShadowVTKVersion.h"
@@ -24,17 +25,6 @@
 
 #include <cmath>
 #include <random>
-
-namespace
-{
-void Basis(const glm::dvec3& axis, glm::dvec3& e1, glm::dvec3& e2)
-{
-  const glm::dvec3 helper =
-    std::abs(axis.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0);
-  e1 = glm::normalize(glm::cross(axis, helper));
-  e2 = glm::cross(axis, e1);
-}
-}
 
 class vtkReferenceShadowPass::vtkInternals
 {
@@ -126,7 +116,7 @@ bool vtkReferenceShadowPass::RenderScreenSpace(const vtkRenderState* s)
     }
     const float weight = 1.0f / static_cast<float>(points.size());
     glm::dvec3 e1, e2;
-    Basis(light.Direction, e1, e2);
+    vtkShadowMatrices::Basis(light.Direction, e1, e2);
 
     this->Screen->BeginVisibility(static_cast<int>(slot), 0.0f);
     for (const auto& d : points)

@@ -226,13 +226,6 @@ struct LightShape
   double ConeAngle = 0.0; // spot: half-angle, radians
 };
 
-// A unit vector `w`'s orthonormal complement.
-void Basis(const glm::dvec3& w, glm::dvec3& u, glm::dvec3& v)
-{
-  u = glm::normalize(
-    glm::cross(std::abs(w.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0), w));
-  v = glm::cross(w, u);
-}
 }
 
 //------------------------------------------------------------------------------
@@ -448,7 +441,7 @@ int vtkRayCastLightVisibility::RequestData(
             facing[index] = static_cast<float>(glm::dot(n, toLight));
 
             glm::dvec3 u, v;
-            Basis(toLight, u, v);
+            vtkShadowMatrices::Basis(toLight, u, v);
             const glm::dvec3 start = at + offset * n;
             const glm::dvec2 jitter = Jitter(static_cast<unsigned int>(index), seed);
             const double cosSpread = std::cos(spread);
