@@ -10,6 +10,7 @@ set(softshadows_rendering_classes
 # Installed, so that a technique can be written outside the module, but not
 # wrapped for Python.
 set(softshadows_rendering_framework_classes
+  vtkShadowCameraStage
   vtkShadowCasterRegistry
   vtkShadowCompute
   vtkShadowDepthStage
@@ -19,6 +20,8 @@ set(softshadows_rendering_framework_classes
   vtkShadowGPUTimer
   vtkShadowMapManager
   vtkShadowParallelMaps
+  vtkShadowReceiverStage
+  vtkShadowSceneDelegate
   vtkShadowScreenBuffers
   vtkShadowShaderHooks
   vtkShadowStage)

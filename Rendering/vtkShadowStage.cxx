@@ -2,14 +2,41 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkShadowStage.h"
 
+#include "vtkCamera.h"
+#include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkShadowMapperCode.h"
+#include "vtkShadowMatrices.h"
+
+#include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
 
 vtkShadowStage::~vtkShadowStage() = default;
+
+//------------------------------------------------------------------------------
+void vtkShadowStage::SetViewToWorld(vtkShaderProgram* program, vtkRenderer* renderer)
+{
+  glm::mat4 viewToWorld(glm::inverse(
+    vtkShadowMatrices::FromVTK(renderer->GetActiveCamera()->GetModelViewTransformMatrix())));
+  program->SetUniformMatrix4x4("vtkShadowViewToWorld", glm::value_ptr(viewToWorld));
+}
+
+//------------------------------------------------------------------------------
+std::string vtkShadowShaderSources::GetSurfaceCode() const
+{
+  const bool computed = this->Fragment.find("vec4 vertexVC") != std::string::npos;
+  const bool shaded = this->Fragment.find("normalVCVSOutput") != std::string::npos;
+  return std::string("  vec4 vtkShadowPositionWC;\n"
+                     "  vec3 vtkShadowNormalWC;\n"
+                     "  bool vtkShadowFaceDefined = vtkShadowSurface(") +
+    (computed ? "vertexVC.xyz" : "vertexVCVSOutput.xyz") + ", " +
+    (shaded ? "normalVCVSOutput" : "vec3(0.0, 0.0, 1.0)") + ", " +
+    (vtkShadowMapperCode::MovesDepthOnly(this->Fragment) ? "true" : "false") +
+    ", vtkShadowPositionWC, vtkShadowNormalWC);\n";
+}
 
 //------------------------------------------------------------------------------
 bool vtkShadowShaderSources::Before(

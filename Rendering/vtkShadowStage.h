@@ -30,6 +30,7 @@
 
 class vtkAbstractMapper;
 class vtkProp;
+class vtkRenderer;
 class vtkShaderProgram;
 struct vtkShadowDrawSetup;
 
@@ -69,6 +70,15 @@ public:
   /// Whether the fragment shader has a lit view-space position (see vtkShadowMapperCode).
   bool IsLit() const;
 
+  /**
+   * Statements giving each lit fragment's surface (vtkShadowSurfaceFS.glsl:
+   * `vtkShadowPositionWC`, `vtkShadowNormalWC`, `vtkShadowFaceDefined`), as
+   * the camera pass and the receivers' visibility see it: from the
+   * fragment's view-space position, which sphere and stick imposters compute
+   * in the fragment shader, and its shading normal.
+   */
+  std::string GetSurfaceCode() const;
+
   /// Texture units the three shaders declare (sampler uniforms, arrays by
   /// their size): before the receiver stage's code, the mapper's own.
   int CountTextures() const;
@@ -100,6 +110,10 @@ public:
 
   /// What the stage draws, for messages ("the receivers").
   virtual std::string GetName() const { return "a shadow map"; }
+
+  /// `vtkShadowViewToWorld`, the camera's view to world matrix, which the
+  /// surface code (vtkShadowShaderSources::GetSurfaceCode()) reads.
+  static void SetViewToWorld(vtkShaderProgram* program, vtkRenderer* renderer);
 };
 
 #endif

@@ -2,24 +2,18 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkSoftShadowPass.h"
 
-#include "vtkAbstractMapper.h"
-#include "vtkCamera.h"
-#include "vtkDualDepthPeelingPass.h"
 #include "vtkLight.h"
-#include "vtkMatrix4x4.h"
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLState.h"
-#include "vtkOrderIndependentTranslucentPass.h"
 #include "vtkProp.h"
-#include "vtkRenderPassCollection.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
-#include "vtkSequencePass.h"
 #include "vtkShaderProgram.h"
+#include "vtkShadowCameraStage.h"
 #include "vtkShadowCasterRegistry.h"
 #include "vtkShadowCompute.h"
 #include "vtkShadowDepthStage.h"
@@ -27,368 +21,16 @@
 #include "vtkShadowDrawer.h"
 #include "vtkShadowLightSize.h"
 #include "vtkShadowMapManager.h"
-#include "vtkShadowMapperCode.h"
-#include "vtkShadowMatrices.h"
 #include "vtkShadowParallelMaps.h"
+#include "vtkShadowReceiverStage.h"
+#include "vtkShadowSceneDelegate.h"
 #include "vtkShadowScreenBuffers.h"
 #include "vtkShadowShaderHooks.h"
 #include "vtkShadowStage.h"
 #include "vtkShadowVTKVersion.h"
 #include "vtkTextureObject.h"
-#include "vtkTranslucentPass.h"
-#include "vtkVolumetricPass.h"
-
-#include "vtkShadowCubeLookupFS.h"
-#include "vtkShadowNormalOffsetFS.h"
-#include "vtkShadowSurfaceFS.h"
-#include "vtkSoftShadowReceiverFS.h"
-
-#include <glm/gtc/type_ptr.hpp>
-#include <glm/mat4x4.hpp>
 
 #include <algorithm>
-#include <sstream>
-
-// The depth-only pre-pass as a step of the delegate's opaque sequence: it
-// runs after the camera pass has cleared and set up the frame.
-class vtkSoftShadowPass::vtkDepthPrePassStep : public vtkRenderPass
-{
-public:
-  static vtkDepthPrePassStep* New();
-  vtkTypeMacro(vtkDepthPrePassStep, vtkRenderPass);
-  vtkSoftShadowPass* Owner = nullptr;
-  void Render(const vtkRenderState* s) override { this->Owner->RenderDepthPrePass(s); }
-};
-vtkStandardNewMacro(vtkSoftShadowPass::vtkDepthPrePassStep);
-
-namespace
-{
-void SetMatrix(vtkShaderProgram* program, const std::string& name, const glm::dmat4& m)
-{
-  glm::mat4 single(m);
-  program->SetUniformMatrix4x4(name.c_str(), glm::value_ptr(single));
-}
-
-// Each lit fragment's surface (vtkShadowSurfaceFS.glsl), as the camera pass
-// and the receivers' visibility expressions see it: from the fragment's
-// view-space position, which sphere and stick imposters compute in the
-// fragment shader (vertexVC), and its shading normal.
-std::string SurfaceCode(const std::string& fragmentShader)
-{
-  const bool computed = fragmentShader.find("vec4 vertexVC") != std::string::npos;
-  const bool shaded = fragmentShader.find("normalVCVSOutput") != std::string::npos;
-  return std::string("  vec4 vtkShadowPositionWC;\n"
-                     "  vec3 vtkShadowNormalWC;\n"
-                     "  bool vtkShadowFaceDefined = vtkShadowSurface(") +
-    (computed ? "vertexVC.xyz" : "vertexVCVSOutput.xyz") + ", " +
-    (shaded ? "normalVCVSOutput" : "vec3(0.0, 0.0, 1.0)") + ", " +
-    (vtkShadowMapperCode::MovesDepthOnly(fragmentShader) ? "true" : "false") +
-    ", vtkShadowPositionWC, vtkShadowNormalWC);\n";
-}
-
-// The camera's view to world matrix, for the surface code.
-void SetViewToWorld(vtkShaderProgram* program, vtkRenderer* renderer)
-{
-  SetMatrix(program, "vtkShadowViewToWorld",
-    glm::inverse(
-      vtkShadowMatrices::FromVTK(renderer->GetActiveCamera()->GetModelViewTransformMatrix())));
-}
-
-std::string Indexed(const char* name, int i)
-{
-  return std::string(name) + "[" + std::to_string(i) + "]";
-}
-}
-
-//------------------------------------------------------------------------------
-// The camera pass (RenderCameraDepth()): depth, and the technique's code on
-// every fragment the camera sees, writing its colour targets.
-class vtkSoftShadowPass::vtkCameraStage : public vtkShadowStage
-{
-public:
-  explicit vtkCameraStage(vtkSoftShadowPass* pass)
-    : Pass(pass)
-  {
-  }
-
-  void Begin(const vtkShadowDrawSetup& setup) override
-  {
-    this->Targets = static_cast<int>(setup.Colours.size());
-  }
-
-  void PreReplace(vtkShadowShaderSources& sources) override
-  {
-    using namespace vtkShadowMapperCode;
-    vtkShadowShaderSources::Before(sources.Fragment, LightDec, ShadowDec);
-    sources.Require(sources.Fragment, LightImpl,
-      std::string(ShadowImpl) + "\n  return;\n  " + LightImpl, "the camera pass");
-  }
-
-  void PostReplace(vtkShadowShaderSources& sources) override
-  {
-    // Without lighting the mapper declares no view-space position: such
-    // fragments write 0.
-    std::string dec, impl;
-    if (this->Targets > 0 && sources.IsLit())
-    {
-      dec = std::string(vtkShadowSurfaceFS) + "\n" + this->Code->Declarations;
-      impl = SurfaceCode(sources.Fragment) + this->Code->Implementation;
-    }
-    else
-    {
-      for (int i = 0; i < std::max(this->Targets, 1); ++i)
-      {
-        impl += "  gl_FragData[" + std::to_string(i) + "] = vec4(0.0);\n";
-      }
-    }
-    sources.Require(sources.Fragment, vtkShadowMapperCode::ShadowDec, dec, "the camera pass");
-    sources.Require(sources.Fragment, vtkShadowMapperCode::ShadowImpl, impl, "the camera pass");
-  }
-
-  std::string GetName() const override { return "the camera pass"; }
-
-  void SetUniforms(vtkShaderProgram* program, vtkProp*) override
-  {
-    if (program->IsUniformUsed("vtkShadowViewToWorld"))
-    {
-      SetViewToWorld(program, this->Pass->Maps->GetRenderer());
-      if (this->Code->Uniforms)
-      {
-        this->Code->Uniforms(program);
-      }
-    }
-  }
-
-  const CameraPassCode* Code = nullptr; ///< RenderCameraDepth()'s, while it draws
-
-private:
-  vtkSoftShadowPass* Pass;
-  int Targets = 0;
-};
-
-//------------------------------------------------------------------------------
-// The receivers, drawn by the delegate: tags are placed before the mapper
-// writes its lighting code, and filled after, once it is known whether the
-// shader has lighting at all; then each shadowed light's contribution is
-// scaled by its shadow factor.
-class vtkSoftShadowPass::vtkReceiverStage : public vtkShadowStage
-{
-public:
-  explicit vtkReceiverStage(vtkSoftShadowPass* pass)
-    : Pass(pass)
-  {
-  }
-
-  void PreReplace(vtkShadowShaderSources& sources) override
-  {
-    using namespace vtkShadowMapperCode;
-    if (this->Pass->FrameTraits.ScreenSpace)
-    {
-      // textureGather (vtkShadowScreenVisibility) in the mappers' GLSL 1.50.
-      sources.AddFragmentExtension("GL_ARB_texture_gather");
-    }
-    const auto& lights = this->Pass->Maps->GetLights();
-    if (std::any_of(lights.begin(), lights.end(),
-          [](const vtkShadowMapManager::Light& l) { return l.Point; }))
-    {
-      // The cube maps' lookups in one loop where it is supported
-      // (vtkShadowCubeHardAll, vtkSoftShadowReceiverFS.glsl; omni's Poisson
-      // lookup, vtkOmniPoissonAll, needs it).
-      sources.AddFragmentExtension("GL_ARB_gpu_shader5");
-    }
-    for (const std::string& extension : this->Pass->FrameTraits.ReceiverExtensions)
-    {
-      sources.AddFragmentExtension(extension);
-    }
-    // Shaders without lighting (no tags) are not shadowed: no word needed.
-    vtkShadowShaderSources::Before(sources.Fragment, LightDec, ShadowDec);
-    vtkShadowShaderSources::Before(sources.Fragment, LightImpl, ShadowImpl);
-    // The technique's vertex code (GetReceiverShading()), if any.
-    vtkShadowShaderSources::Before(sources.Vertex, LightDec, ShadowDec);
-    vtkShadowShaderSources::Before(sources.Vertex, LightImpl, ShadowImpl);
-  }
-
-  void PostReplace(vtkShadowShaderSources& sources) override;
-  void SetUniforms(vtkShaderProgram* program, vtkProp*) override;
-  std::string GetName() const override { return "the receivers"; }
-
-private:
-  vtkSoftShadowPass* Pass;
-};
-
-//------------------------------------------------------------------------------
-void vtkSoftShadowPass::vtkReceiverStage::PostReplace(vtkShadowShaderSources& sources)
-{
-  vtkSoftShadowPass* pass = this->Pass;
-  std::string& fragmentShader = sources.Fragment;
-  const auto& lights = pass->Maps->GetLights();
-  const bool lit = sources.IsLit();
-  if (!lights.empty() && sources.Mapper && sources.Mapper->IsA("vtkVolumeMapper"))
-  {
-    sources.AddMiss("volumes receive no shadows from " + std::string(pass->GetClassName()) +
-      "; they are drawn as VTK draws them without it");
-  }
-
-  // The shadowed lights were chosen to fit beside ReservedTextureUnits of
-  // the mappers' own textures; a shader with more of its own shadows the
-  // first lights that fit (arrays indexed by slot stay compact), and raises
-  // the reserve for the next frames.
-  const int own = lit ? sources.CountTextures() : 0;
-  pass->ReceiverOwnTextures = std::max(pass->ReceiverOwnTextures, own);
-  const int room = pass->TextureUnits - own - pass->FrameTraits.ReceiverTexturesPerFrame;
-  const size_t count =
-    std::min(lights.size(), static_cast<size_t>(std::max(room, 0) / pass->ReceiverTextures()));
-  if (lit && count < lights.size())
-  {
-    sources.AddMiss("its own " + std::to_string(own) + " textures leave room for the shadows of " +
-      std::to_string(count) + " of the " + std::to_string(lights.size()) +
-      " shadowed lights; the others light it unshadowed");
-  }
-  const bool active = lit && count > 0;
-
-  std::string onlyVisibility = "1.0";
-  std::string unscaled; // lights whose lighting lines were not found
-  std::ostringstream dec, impl;
-  if (active)
-  {
-    const auto cubes = std::count_if(lights.begin(), lights.begin() + count,
-      [](const vtkShadowMapManager::Light& l) { return l.Point; });
-    dec << "#define VTK_SHADOW_LIGHTS " << count << "\n"
-        << "#define VTK_SHADOW_MAPS " << count - cubes << "\n"
-        << "#define VTK_SHADOW_CUBES " << cubes << "\n";
-    if (pass->FrameTraits.ScreenSpace)
-    {
-      dec << "#define VTK_SHADOW_SCREEN_SPACE\n";
-    }
-    dec << vtkShadowSurfaceFS << "\n"
-        << vtkSoftShadowPass::GetLightSpaceLookupCode() << vtkSoftShadowReceiverFS << "\n";
-    for (const auto& texture : pass->FrameReceiverCode.Textures)
-    {
-      dec << "uniform " << texture.Sampler << " " << texture.Name << ";\n";
-    }
-    dec << pass->FrameReceiverCode.Declarations << "\n";
-    const ReceiverShading shading = pass->GetReceiverShading(sources);
-    dec << shading.FragmentDeclarations << "\n";
-    vtkShaderProgram::Substitute(
-      sources.Vertex, vtkShadowMapperCode::ShadowDec, shading.VertexDeclarations, false);
-    vtkShaderProgram::Substitute(
-      sources.Vertex, vtkShadowMapperCode::ShadowImpl, shading.VertexImplementation, false);
-
-    impl << SurfaceCode(fragmentShader);
-    if (pass->FrameTraits.ScreenSpace)
-    {
-      impl << "  vtkShadowScreenSetup(vtkShadowPositionWC);\n";
-    }
-    impl << pass->FrameReceiverCode.Setup;
-    for (size_t slot = 0; slot < count; ++slot)
-    {
-      const int n = lights[slot].ShaderIndex;
-      const int i = static_cast<int>(slot);
-      const auto& visibility = pass->FrameReceiverCode.Visibility;
-      impl << "  float vtkShadowVisibility" << n << " = "
-           << (visibility ? visibility(i) : pass->GetDefaultVisibility(i)) << ";\n"
-           << "  float vtkShadowFactor" << n << " = mix(1.0, vtkShadowVisibility" << n
-           << ", vtkShadowAttenuation[" << i << "]);\n";
-      if (!vtkShadowMapperCode::ScaleLight(fragmentShader, n, "vtkShadowFactor" + std::to_string(n),
-            slot < shading.PhongScales.size() ? shading.PhongScales[slot] : ""))
-      {
-        unscaled += (unscaled.empty() ? "" : ", ") + std::to_string(n);
-      }
-      if (lights[slot].SceneIndex == pass->ShadowOnlyLight)
-      {
-        onlyVisibility = "vtkShadowVisibility" + std::to_string(n);
-      }
-    }
-    // A lit shader must have kept the tags and the lighting lines; others
-    // only lose the tags. One word per shader: the first thing missing.
-    const std::string what = "the shadow term";
-    if (sources.Require(fragmentShader, vtkShadowMapperCode::ShadowDec, dec.str(), what) &&
-      sources.Require(fragmentShader, vtkShadowMapperCode::ShadowImpl, impl.str(), what) &&
-      !unscaled.empty())
-    {
-      sources.AddMiss("its lighting code has no line the shadow of light " + unscaled +
-        " can scale, so its actors are drawn without that shadow (a custom shader replacement, "
-        "or mapper code other than vtkShadowMapperCode.h expects)");
-    }
-  }
-  else
-  {
-    vtkShaderProgram::Substitute(fragmentShader, vtkShadowMapperCode::ShadowDec, "", false);
-    vtkShaderProgram::Substitute(fragmentShader, vtkShadowMapperCode::ShadowImpl, "", false);
-    vtkShaderProgram::Substitute(sources.Vertex, vtkShadowMapperCode::ShadowDec, "", false);
-    vtkShaderProgram::Substitute(sources.Vertex, vtkShadowMapperCode::ShadowImpl, "", false);
-  }
-
-  if (pass->ShadowOnlyLight >= 0)
-  {
-    vtkShaderProgram::Substitute(fragmentShader, vtkShadowMapperCode::LightImpl,
-      "gl_FragData[0] = vec4(vec3(" + onlyVisibility + "), 1.0);\n  " +
-        vtkShadowMapperCode::LightImpl,
-      false);
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkSoftShadowPass::vtkReceiverStage::SetUniforms(vtkShaderProgram* program, vtkProp* prop)
-{
-  vtkSoftShadowPass* pass = this->Pass;
-  // Only programs with the shadow term; a visibility that does not depend
-  // on the position (or only in the shadow-only view) may have left
-  // vtkShadowViewToWorld unused.
-  bool receiver = program->IsUniformUsed("vtkShadowViewToWorld") ||
-    program->IsUniformUsed("vtkShadowAttenuation[0]");
-  for (const auto& texture : pass->FrameReceiverCode.Textures)
-  {
-    receiver = receiver || program->IsUniformUsed(texture.Name.c_str());
-  }
-  if (!receiver)
-  {
-    return;
-  }
-  SetViewToWorld(program, pass->Maps->GetRenderer());
-  program->SetUniformf("vtkShadowMapTexel", 1.0f / static_cast<float>(pass->MapSize));
-  program->SetUniformi("vtkShadowPCFRadius", pass->GetPCFRadius());
-  program->SetUniformi("vtkShadowPCFBilinear", pass->GetPCFBilinear() ? 1 : 0);
-  vtkShadowMapManager::SetLookupUniforms(
-    program, "vtkShadow", pass->MapSize, pass->NormalBias, pass->DistanceBias);
-
-  const auto& lights = pass->Maps->GetLights();
-  for (size_t slot = 0; slot < lights.size(); ++slot)
-  {
-    const auto& light = lights[slot];
-    const int i = static_cast<int>(slot);
-    program->SetUniformf(
-      Indexed("vtkShadowAttenuation", i).c_str(), static_cast<float>(light.Attenuation));
-    if (light.Point)
-    {
-      program->SetUniformi(
-        Indexed("vtkShadowCube", light.MapIndex).c_str(), light.CubeMap->GetTextureUnit());
-      vtkShadowMapManager::SetCubeUniforms(program, "vtkShadow",
-        "[" + std::to_string(light.MapIndex) + "]", light.Faces, pass->DrawsPackedCubeMaps());
-      continue;
-    }
-    vtkShadowMapManager::SetFrustumUniforms(
-      program, "vtkShadow", "[" + std::to_string(i) + "]", light.Map, pass->MapSize);
-    if (light.DepthMap) // techniques with maps of their own may not draw it
-    {
-      program->SetUniformi(
-        Indexed("vtkShadowMap", light.MapIndex).c_str(), light.DepthMap->GetTextureUnit());
-    }
-  }
-  if (pass->FrameTraits.ScreenSpace)
-  {
-    pass->Screen->SetUniforms(program, static_cast<int>(lights.size()));
-  }
-  for (const auto& texture : pass->FrameReceiverCode.Textures)
-  {
-    program->SetUniformi(texture.Name.c_str(), texture.Texture->GetTextureUnit());
-  }
-  if (pass->FrameReceiverCode.Uniforms)
-  {
-    pass->FrameReceiverCode.Uniforms(program);
-  }
-  pass->SetReceiverShadingUniforms(program, prop);
-}
 
 //------------------------------------------------------------------------------
 vtkSoftShadowPass::vtkSoftShadowPass()
@@ -399,17 +41,12 @@ vtkSoftShadowPass::vtkSoftShadowPass()
   , DepthStage(new vtkShadowDepthStage)
   , PrePassStage(new vtkShadowDepthStage)
   , DistanceStage(new vtkShadowDistanceStage)
-  , CameraStage(new vtkCameraStage(this))
-  , ReceiverStage(new vtkReceiverStage(this))
+  , CameraStage(new vtkShadowCameraStage)
+  , ReceiverStage(new vtkShadowReceiverStage)
   , Parallel(new vtkShadowParallelMaps)
+  , Scene(new vtkShadowSceneDelegate)
 {
-  // The default delegate draws translucency as VTK's renderer does without a
-  // pass: order independent, or depth-peeled when the renderer asks.
-  this->DefaultSteps = vtkSmartPointer<vtkRenderStepsPass>::New();
-  this->OrderIndependent->SetTranslucentPass(this->Translucent);
-  this->DepthPeeling->SetTranslucentPass(this->Translucent);
-  this->DefaultSteps->SetTranslucentPass(this->OrderIndependent);
-  this->SetDelegatePass(this->DefaultSteps);
+  this->SetDelegatePass(this->Scene->GetDefaultSteps());
   this->PrePassStage->SetLightSpace(false);
   this->Drawer->GetHooks()->SetOwner(this); // names the technique in its errors
 }
@@ -483,7 +120,8 @@ int vtkSoftShadowPass::GetMaximumNumberOfShadowedLights(bool vtkNotUsed(pointLig
 //------------------------------------------------------------------------------
 int vtkSoftShadowPass::ShadowTextureUnits() const
 {
-  return this->TextureUnits - std::max(this->ReservedTextureUnits, this->ReceiverOwnTextures) -
+  return this->TextureUnits -
+    std::max(this->ReservedTextureUnits, this->ReceiverStage->GetOwnTextures()) -
     this->FrameTraits.ReceiverTexturesPerFrame;
 }
 
@@ -557,8 +195,8 @@ void vtkSoftShadowPass::Render(const vtkRenderState* s)
     vtkErrorMacro(<< this->GetClassName() << " does not combine its " << uncombined
                   << " across the " << this->Parallel->GetController()->GetNumberOfProcesses()
                   << " processes of a parallel render yet: shadows that casters on one process "
-                     "cast on another's receivers are missing or hard. hard, reference, contact "
-                     "and omni combine all they draw.");
+                     "cast on another's receivers are missing or hard. Techniques that draw "
+                     "only the framework's depth and distance maps combine all they draw.");
     this->UncombinedReported = true;
   }
   const int unshadowed = this->Maps->GetNumberOfUnshadowedLights();
@@ -621,8 +259,9 @@ void vtkSoftShadowPass::RenderReceivers(const vtkRenderState* s, bool screenSpac
   {
     this->Screen->ActivateTextures();
   }
-  this->FrameReceiverCode = shadowed.empty() ? ReceiverCode() : this->GetReceiverCode();
-  for (auto& texture : this->FrameReceiverCode.Textures)
+  this->ReceiverStage->SetFrame(this->GetReceiverFrame());
+  const ReceiverCode& code = this->ReceiverStage->GetFrame().Code;
+  for (auto& texture : code.Textures)
   {
     texture.Texture->Activate();
   }
@@ -633,43 +272,22 @@ void vtkSoftShadowPass::RenderReceivers(const vtkRenderState* s, bool screenSpac
   vtkOpenGLState::ScopedglEnableDisable seamless(state, GL_TEXTURE_CUBE_MAP_SEAMLESS);
   state->vtkglEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
 
-  if (this->DelegatePass == this->DefaultSteps)
-  {
-    this->ChooseTranslucency(s->GetRenderer());
-  }
-
   // Gerasimov's depth-only pre-pass (section 12.3.4): opaque depth first, so
-  // the shading pass runs only on visible fragments. It is a step slotted
-  // before the default delegate's opaque pass, after its camera pass cleared.
-  auto* steps = vtkRenderStepsPass::SafeDownCast(this->DelegatePass);
-  vtkSmartPointer<vtkRenderPass> opaque = steps ? steps->GetOpaquePass() : nullptr;
-  const bool prePass = this->DepthPrePass && !shadowed.empty() && opaque;
-  if (prePass)
+  // the shading pass runs only on visible fragments.
+  std::function<void(const vtkRenderState*)> prePass;
+  if (this->DepthPrePass && !shadowed.empty())
   {
-    vtkNew<vtkDepthPrePassStep> step;
-    step->Owner = this;
-    vtkNew<vtkRenderPassCollection> passes;
-    passes->AddItem(step);
-    passes->AddItem(opaque);
-    vtkNew<vtkSequencePass> sequence;
-    sequence->SetPasses(passes);
-    steps->SetOpaquePass(sequence);
+    prePass = [this](const vtkRenderState* state) { this->RenderDepthPrePass(state); };
   }
-
   vtkShadowShaderHooks* hooks = this->Drawer->GetHooks();
   hooks->SetStage(this->ReceiverStage.get());
   hooks->Attach(s);
-  this->DelegatePass->Render(s);
-  this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
+  this->NumberOfRenderedProps += this->Scene->Render(s, this->DelegatePass, prePass);
   hooks->Detach(s);
   hooks->SetStage(nullptr);
   this->ReceiversDrawn();
-  if (prePass)
-  {
-    steps->SetOpaquePass(opaque);
-  }
 
-  for (auto& texture : this->FrameReceiverCode.Textures)
+  for (auto& texture : code.Textures)
   {
     texture.Texture->Deactivate();
   }
@@ -687,24 +305,33 @@ void vtkSoftShadowPass::RenderReceivers(const vtkRenderState* s, bool screenSpac
 }
 
 //------------------------------------------------------------------------------
-void vtkSoftShadowPass::ChooseTranslucency(vtkRenderer* renderer)
+vtkShadowReceiverStage::Frame vtkSoftShadowPass::GetReceiverFrame()
 {
-  // As vtkOpenGLRenderer::DeviceRenderTranslucentPolygonalGeometry() does.
-  vtkRenderStepsPass* steps = this->DefaultSteps;
-  if (!renderer->GetUseDepthPeeling())
+  vtkShadowReceiverStage::Frame frame;
+  frame.Maps = this->Maps.get();
+  frame.Screen = this->FrameTraits.ScreenSpace ? this->Screen.get() : nullptr;
+  if (!this->Maps->GetLights().empty())
   {
-    steps->SetTranslucentPass(this->OrderIndependent);
-    steps->SetVolumetricPass(this->Volumetric);
-    this->DepthPeeling->SetVolumetricPass(nullptr);
-    return;
+    frame.Code = this->GetReceiverCode();
   }
-  this->DepthPeeling->SetMaximumNumberOfPeels(renderer->GetMaximumNumberOfPeels());
-  this->DepthPeeling->SetOcclusionRatio(renderer->GetOcclusionRatio());
-  // Volumes peeled with the translucent geometry, or drawn after it.
-  const bool volumes = renderer->GetUseDepthPeelingForVolumes();
-  this->DepthPeeling->SetVolumetricPass(volumes ? this->Volumetric.Get() : nullptr);
-  steps->SetVolumetricPass(volumes ? nullptr : this->Volumetric.Get());
-  steps->SetTranslucentPass(this->DepthPeeling);
+  frame.DefaultVisibility = [this](int slot) { return this->GetDefaultVisibility(slot); };
+  frame.Shading = [this](const vtkShadowShaderSources& sources)
+  { return this->GetReceiverShading(sources); };
+  frame.ShadingUniforms = [this](vtkShaderProgram* program, vtkProp* prop)
+  { this->SetReceiverShadingUniforms(program, prop); };
+  frame.Extensions = this->FrameTraits.ReceiverExtensions;
+  frame.TextureUnits = this->TextureUnits;
+  frame.TexturesPerFrame = this->FrameTraits.ReceiverTexturesPerFrame;
+  frame.TexturesPerLight = this->ReceiverTextures();
+  frame.MapSize = this->MapSize;
+  frame.NormalBias = this->NormalBias;
+  frame.DistanceBias = this->DistanceBias;
+  frame.PCFRadius = this->GetPCFRadius();
+  frame.PCFBilinear = this->GetPCFBilinear();
+  frame.PackedCubeMaps = this->DrawsPackedCubeMaps();
+  frame.ShadowOnlyLight = this->ShadowOnlyLight;
+  frame.Technique = this->GetClassName();
+  return frame;
 }
 
 //------------------------------------------------------------------------------
@@ -824,9 +451,9 @@ bool vtkSoftShadowPass::RenderCameraDepth(const vtkRenderState* s,
   setup.Colours = targets;
   setup.Draw = vtkShadowDrawSetup::Props::Camera;
   setup.Stage = this->CameraStage.get();
-  this->CameraStage->Code = &code;
+  this->CameraStage->SetCode(&code, s->GetRenderer());
   const bool drawn = setup.Depth && this->Drawer->Draw(s, setup);
-  this->CameraStage->Code = nullptr;
+  this->CameraStage->SetCode(nullptr, nullptr);
   return drawn;
 }
 
@@ -888,7 +515,7 @@ bool vtkSoftShadowPass::CheckRequirements(vtkOpenGLRenderWindow* context)
 //------------------------------------------------------------------------------
 std::string vtkSoftShadowPass::GetLightSpaceLookupCode()
 {
-  return std::string(vtkShadowNormalOffsetFS) + "\n" + vtkShadowCubeLookupFS + "\n";
+  return vtkShadowReceiverStage::GetLightSpaceLookupCode();
 }
 
 //------------------------------------------------------------------------------

@@ -55,10 +55,10 @@
 #ifndef vtkSoftShadowPass_h
 #define vtkSoftShadowPass_h
 
-#include "vtkNew.h" // for vtkNew
 #include "vtkOpenGLRenderPass.h"
+#include "vtkShadowCameraStage.h"          // for vtkShadowCameraPassCode
 #include "vtkShadowGPUTimer.h"             // for vtkShadowGPUTimer
-#include "vtkSmartPointer.h"               // for vtkSmartPointer
+#include "vtkShadowReceiverStage.h"        // for vtkShadowReceiverCode
 #include "vtkSoftShadowsRenderingModule.h" // for export macro
 
 #include <array>      // for std::array
@@ -70,21 +70,17 @@
 class vtkInformationDoubleKey;
 class vtkLight;
 class vtkMultiProcessController;
-class vtkDualDepthPeelingPass;
 class vtkOpenGLRenderWindow;
-class vtkOrderIndependentTranslucentPass;
 class vtkProp;
 class vtkShadowShaderSources;
-class vtkRenderStepsPass;
 class vtkRenderer;
-class vtkTranslucentPass;
-class vtkVolumetricPass;
 class vtkShadowCasterRegistry;
 class vtkShadowDepthStage;
 class vtkShadowDistanceStage;
 class vtkShadowDrawer;
 class vtkShadowMapManager;
 class vtkShadowParallelMaps;
+class vtkShadowSceneDelegate;
 class vtkShadowScreenBuffers;
 struct vtkShadowDrawSetup;
 struct vtkShadowFrustum;
@@ -395,18 +391,8 @@ protected:
    * ScreenSpace. Default: nothing.
    */
   virtual bool RenderScreenSpace(const vtkRenderState*) { return true; }
-  /**
-   * A technique's code in the camera pass: GLSL declarations, statements
-   * that see `vtkShadowPositionWC` (vec4), `vtkShadowNormalWC` (the face's
-   * unit normal, towards the camera) and `vtkShadowFaceDefined` and write
-   * every target, and the uniforms they need (may be unset).
-   */
-  struct CameraPassCode
-  {
-    std::string Declarations;
-    std::string Implementation;
-    std::function<void(vtkShaderProgram*)> Uniforms;
-  };
+  /// A technique's code in the camera pass (vtkShadowCameraStage.h).
+  using CameraPassCode = vtkShadowCameraPassCode;
 
   /**
    * Helper for RenderScreenSpace(): draw the camera depth of the opaque props
@@ -420,31 +406,12 @@ protected:
   bool RenderCameraDepth(const vtkRenderState* s,
     const std::vector<vtkTextureObject*>& targets = {}, const CameraPassCode& code = {});
 
-  /// A texture the receivers read: the framework declares it (`uniform
-  /// <Sampler> <Name>;`), binds it while they draw and sets its unit.
-  struct ReceiverTexture
-  {
-    std::string Name;
-    std::string Sampler; ///< e.g. "sampler2D"
-    vtkTextureObject* Texture;
-  };
-
-  /**
-   * What a technique adds to receivers' fragment shaders: GLSL declarations
-   * after the framework's own (vtkSoftShadowReceiverFS.glsl); the expression
-   * of shadowed light `slot`'s visibility (1 lit, 0 umbra) at
-   * `vtkShadowPositionWC` (unset: GetDefaultVisibility()); the textures they
-   * read, per light (e.g. vtkShadowMapManager::Light::Textures) or per frame,
-   * with names that differ; and the technique's uniforms (may be unset).
-   */
-  struct ReceiverCode
-  {
-    std::string Declarations;
-    std::string Setup; ///< statements run once a fragment, before any light's visibility
-    std::function<std::string(int slot)> Visibility;
-    std::vector<ReceiverTexture> Textures;
-    std::function<void(vtkShaderProgram*)> Uniforms;
-  };
+  ///@{
+  /// What a technique adds to the receivers (vtkShadowReceiverStage.h).
+  using ReceiverTexture = vtkShadowReceiverTexture;
+  using ReceiverCode = vtkShadowReceiverCode;
+  using ReceiverShading = vtkShadowReceiverShading;
+  ///@}
 
   /// The technique's receiver code, asked once a frame before receivers
   /// draw. Default: none, each light's GetDefaultVisibility().
@@ -486,20 +453,6 @@ protected:
    * and techniques' own loops).
    */
   bool IsFirstPointLight(int slot) const;
-
-  /// What a technique changes in a receiver's shading besides the shadow
-  /// (e.g. bent normals): code for the vertex shader (declarations; and
-  /// statements in main, before the mapper's lighting code, that may read
-  /// `vertexMC`), declarations for the fragment shader, and per light slot
-  /// an expression scaling that light's Phong diffuse and specular, which
-  /// may read its diffuse cosine `df`. Empty strings: nothing.
-  struct ReceiverShading
-  {
-    std::string VertexDeclarations;
-    std::string VertexImplementation;
-    std::string FragmentDeclarations;
-    std::vector<std::string> PhongScales;
-  };
 
   /**
    * The technique's change to the shading of the receiver whose shaders are
@@ -561,14 +514,10 @@ private:
   vtkSoftShadowPass(const vtkSoftShadowPass&) = delete;
   void operator=(const vtkSoftShadowPass&) = delete;
 
-  class vtkCameraStage;
-  class vtkReceiverStage;
-  class vtkDepthPrePassStep;
   std::unique_ptr<vtkShadowDepthStage> PrePassStage; ///< the camera's depth pre-pass
   std::unique_ptr<vtkShadowDistanceStage> DistanceStage;
-  std::unique_ptr<vtkCameraStage> CameraStage;
-  std::unique_ptr<vtkReceiverStage> ReceiverStage;
-  ReceiverCode FrameReceiverCode;     ///< GetReceiverCode() while receivers draw
+  std::unique_ptr<vtkShadowCameraStage> CameraStage;
+  std::unique_ptr<vtkShadowReceiverStage> ReceiverStage;
   Traits FrameTraits;                 ///< GetTraits(), asked at the start of this frame
   vtkShadowGPUTimer LightSpaceTimer;  ///< step 2
   vtkShadowGPUTimer ScreenSpaceTimer; ///< step 3
@@ -580,9 +529,8 @@ private:
   bool ComputeReported = false;
   bool SamplersReported = false;
   bool PackedReported = false;
-  int ReportedUnshadowed = 0;  ///< the count the last warning gave
-  int TextureUnits = 0;        ///< a receiver's units, in the last frame's context
-  int ReceiverOwnTextures = 0; ///< most textures a receiver's shader declared of its own
+  int ReportedUnshadowed = 0; ///< the count the last warning gave
+  int TextureUnits = 0;       ///< a receiver's units, in the last frame's context
   /// TextureUnits less the reserve and the traits' ReceiverTexturesPerFrame.
   int ShadowTextureUnits() const;
   /// Units one shadowed light takes.
@@ -591,13 +539,11 @@ private:
   bool CheckRequirements(vtkOpenGLRenderWindow* context);
 
   void RenderDepthPrePass(const vtkRenderState* s);
-  void ChooseTranslucency(vtkRenderer* renderer);
-  vtkSmartPointer<vtkRenderStepsPass> DefaultSteps;
-  vtkNew<vtkTranslucentPass> Translucent;
-  vtkNew<vtkOrderIndependentTranslucentPass> OrderIndependent;
-  vtkNew<vtkDualDepthPeelingPass> DepthPeeling;
-  vtkNew<vtkVolumetricPass> Volumetric;
+  std::unique_ptr<vtkShadowSceneDelegate> Scene; ///< the delegate's default, translucency
   void RenderReceivers(const vtkRenderState* s, bool screenSpace);
+  /// What this frame's receivers are drawn with: the lights, the
+  /// technique's receiver code and shading, the settings.
+  vtkShadowReceiverStage::Frame GetReceiverFrame();
 };
 
 #endif
