@@ -11,8 +11,8 @@
 #include "vtkShaderProgram.h"
 #include "vtkShadowLightSize.h"
 #include "vtkShadowParallelMaps.h"
+#include "vtkShadowVTKVersion.h" // for GL_R32F..., through GLEW or glad
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
