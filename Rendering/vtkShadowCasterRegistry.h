@@ -159,16 +159,17 @@ private:
 /**
  * What a technique derives from each caster's polydata, kept until the
  * data is modified or released: Get() rebuilds an entry only when its
- * polydata is new, gone and replaced, or has a newer MTime.
+ * polydata is new, gone and replaced, or has a newer MTime, or when the
+ * technique's `Options` for building it (compared with ==) changed.
  */
-template <typename T>
+template <typename T, typename Options = int>
 class vtkShadowCasterCache
 {
 public:
   using Builder = std::function<void(vtkPolyData* data, T& value)>;
 
-  /// The value for `caster`'s data, built with `build` if needed.
-  T& Get(const vtkShadowCaster& caster, const Builder& build);
+  /// The value for `caster`'s data built with `options`, built with `build` if needed.
+  T& Get(const vtkShadowCaster& caster, const Builder& build, const Options& options = {});
 
   /// Drop the entries of data that is not among `casters` (this frame's).
   void Prune(const vtkShadowCasterRegistry& casters);
@@ -182,6 +183,7 @@ private:
   {
     vtkWeakPointer<vtkPolyData> Data;
     vtkMTimeType Time = 0;
+    Options BuiltWith{};
     T Value;
   };
   std::map<const vtkPolyData*, Entry> Entries;
@@ -190,15 +192,18 @@ private:
 
 #include "vtkPolyData.h" // for vtkPolyData::GetMTime, in the template
 
-template <typename T>
-T& vtkShadowCasterCache<T>::Get(const vtkShadowCaster& caster, const Builder& build)
+template <typename T, typename Options>
+T& vtkShadowCasterCache<T, Options>::Get(
+  const vtkShadowCaster& caster, const Builder& build, const Options& options)
 {
   Entry& entry = this->Entries[caster.Data];
   // A weak pointer gone null: the address was freed and reused by new data.
-  if (entry.Data != caster.Data || entry.Time != caster.Data->GetMTime())
+  if (entry.Data != caster.Data || entry.Time != caster.Data->GetMTime() ||
+    !(entry.BuiltWith == options))
   {
     entry.Data = caster.Data;
     entry.Time = caster.Data->GetMTime();
+    entry.BuiltWith = options;
     entry.Value = T();
     build(caster.Data, entry.Value);
     ++this->Builds;
@@ -206,8 +211,8 @@ T& vtkShadowCasterCache<T>::Get(const vtkShadowCaster& caster, const Builder& bu
   return entry.Value;
 }
 
-template <typename T>
-void vtkShadowCasterCache<T>::Prune(const vtkShadowCasterRegistry& casters)
+template <typename T, typename Options>
+void vtkShadowCasterCache<T, Options>::Prune(const vtkShadowCasterRegistry& casters)
 {
   std::set<const vtkPolyData*> current;
   for (const vtkShadowCaster& caster : casters.GetCasters())

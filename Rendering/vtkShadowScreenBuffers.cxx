@@ -113,6 +113,29 @@ std::unique_ptr<vtkOpenGLQuadHelper> vtkShadowScreenBuffers::CreateQuad(
 }
 
 //------------------------------------------------------------------------------
+vtkOpenGLQuadHelper* vtkShadowScreenBuffers::GetQuad(
+  const std::string& name, const std::string& fragmentSource, bool* failed)
+{
+  auto found = this->Quads.find(name);
+  if (found != this->Quads.end() && found->second.Source == fragmentSource)
+  {
+    return found->second.Quad.get();
+  }
+  KeptQuad& kept = this->Quads[name];
+  kept.Source = fragmentSource;
+  kept.Quad = this->CreateQuad(this->Context, fragmentSource);
+  if (!kept.Quad->Program)
+  {
+    kept.Quad.reset();
+    if (failed)
+    {
+      *failed = true;
+    }
+  }
+  return kept.Quad.get();
+}
+
+//------------------------------------------------------------------------------
 void vtkShadowScreenBuffers::DrawQuad(vtkOpenGLQuadHelper* quad,
   const std::function<void(vtkShaderProgram*)>& setUniforms, QuadMask mask, float quadDepth)
 {
@@ -162,16 +185,25 @@ void vtkShadowScreenBuffers::DrawQuad(vtkOpenGLQuadHelper* quad,
 
 //------------------------------------------------------------------------------
 vtkSmartPointer<vtkTextureObject> vtkShadowScreenBuffers::NewFloatTexture(
-  vtkOpenGLRenderWindow* context, int width, int height, int components)
+  vtkOpenGLRenderWindow* context, int width, int height, int components, const float* data,
+  bool linear)
 {
   auto texture = vtkSmartPointer<vtkTextureObject>::New();
   texture->SetContext(context);
-  texture->SetMinificationFilter(vtkTextureObject::Nearest);
-  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  const int filter = linear ? vtkTextureObject::Linear : vtkTextureObject::Nearest;
+  texture->SetMinificationFilter(filter);
+  texture->SetMagnificationFilter(filter);
   texture->SetWrapS(vtkTextureObject::ClampToEdge);
   texture->SetWrapT(vtkTextureObject::ClampToEdge);
   vtkShadowTextureSpec::SetFloatFormat(texture, components);
-  texture->Allocate2D(width, height, components, VTK_FLOAT);
+  if (data)
+  {
+    texture->Create2DFromRaw(width, height, components, VTK_FLOAT, const_cast<float*>(data));
+  }
+  else
+  {
+    texture->Allocate2D(width, height, components, VTK_FLOAT);
+  }
   return texture;
 }
 
@@ -501,6 +533,7 @@ void vtkShadowScreenBuffers::ReleaseGraphicsResources(vtkWindow* w)
   this->MaximumTargets = 0;
   this->Writer.clear();
   this->PackQuad.reset();
+  this->Quads.clear();
   if (this->Framebuffer)
   {
     this->Framebuffer->ReleaseGraphicsResources(w);

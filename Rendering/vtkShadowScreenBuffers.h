@@ -69,6 +69,16 @@ public:
     vtkOpenGLRenderWindow* context, const std::string& fragmentSource) const;
 
   /**
+   * A technique's full-screen pass, kept with the buffers as GetTexture()
+   * keeps textures: CreateQuad() of `fragmentSource` on first use and again
+   * when the source changes, released with the buffers. nullptr when it
+   * does not build (VTK logs the compiler's output); a source that failed
+   * is not built again, and only that first time is `failed` set.
+   */
+  vtkOpenGLQuadHelper* GetQuad(
+    const std::string& name, const std::string& fragmentSource, bool* failed = nullptr);
+
+  /**
    * How a quad uses the target's depth buffer as a pixel mask, so that later
    * passes shade only the pixels an earlier one selected (the rasterizer
    * skips the others before shading).
@@ -101,11 +111,13 @@ public:
   void EndVisibility();
 
   /**
-   * A float texture of 1 to 4 components, nearest filtering, clamped to its
-   * edges: what screen-space passes draw into and read texel by texel.
+   * A float texture of 1 to 4 components, clamped to its edges: what
+   * screen-space passes draw into and read texel by texel (nearest
+   * filtering), or with `data` (width * height * components floats) and
+   * `linear` filtering a technique's table read between texels.
    */
-  static vtkSmartPointer<vtkTextureObject> NewFloatTexture(
-    vtkOpenGLRenderWindow* context, int width, int height, int components);
+  static vtkSmartPointer<vtkTextureObject> NewFloatTexture(vtkOpenGLRenderWindow* context,
+    int width, int height, int components, const float* data = nullptr, bool linear = false);
 
   /**
    * A technique's own texture, kept with the buffers: a NewFloatTexture() of
@@ -250,6 +262,12 @@ private:
   unsigned int BoundTargets = 0;
   bool BoundDepth = false;
   std::map<std::string, vtkSmartPointer<vtkTextureObject>> Textures;
+  struct KeptQuad
+  {
+    std::string Source;
+    std::unique_ptr<vtkOpenGLQuadHelper> Quad; ///< null when Source failed
+  };
+  std::map<std::string, KeptQuad> Quads;
   int MaximumTargets = 0;
   unsigned int RawDepthSampler = 0;
   unsigned int BilinearSampler = 0;

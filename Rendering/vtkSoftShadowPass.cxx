@@ -435,6 +435,21 @@ bool vtkSoftShadowPass::RenderLightDepthMaps(const vtkRenderState* s, bool linea
 }
 
 //------------------------------------------------------------------------------
+vtkOpenGLQuadHelper* vtkSoftShadowPass::GetScreenQuad(
+  const std::string& name, const std::string& fragmentSource)
+{
+  bool failed = false;
+  vtkOpenGLQuadHelper* quad = this->Screen->GetQuad(name, fragmentSource, &failed);
+  if (failed)
+  {
+    vtkErrorMacro("The screen-space pass " << name
+                                           << " did not build (the shader log is above): drawing "
+                                              "without shadows.");
+  }
+  return quad;
+}
+
+//------------------------------------------------------------------------------
 bool vtkSoftShadowPass::RenderCameraDepth(const vtkRenderState* s,
   const std::vector<vtkTextureObject*>& targets, const CameraPassCode& code)
 {

@@ -70,6 +70,7 @@
 class vtkInformationDoubleKey;
 class vtkLight;
 class vtkMultiProcessController;
+class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkProp;
 class vtkShadowShaderSources;
@@ -391,6 +392,14 @@ protected:
    * ScreenSpace. Default: nothing.
    */
   virtual bool RenderScreenSpace(const vtkRenderState*) { return true; }
+  /**
+   * Helper for RenderScreenSpace(): the technique's full-screen pass `name`
+   * (vtkShadowScreenBuffers::GetQuad()), built from `fragmentSource` on first
+   * use and again when the source changes. nullptr when it does not build,
+   * reported once; the pass then draws without shadows.
+   */
+  vtkOpenGLQuadHelper* GetScreenQuad(const std::string& name, const std::string& fragmentSource);
+
   /// A technique's code in the camera pass (vtkShadowCameraStage.h).
   using CameraPassCode = vtkShadowCameraPassCode;
 

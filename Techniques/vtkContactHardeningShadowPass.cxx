@@ -4,7 +4,6 @@
 
 #include "vtkCamera.h"
 #include "vtkObjectFactory.h"
-#include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkRenderState.h"
@@ -66,8 +65,9 @@ std::vector<float> ScaledTaps(const std::vector<float>& taps, int size, bool rou
 class vtkContactHardeningShadowPass::vtkInternals
 {
 public:
-  std::unique_ptr<vtkOpenGLQuadHelper> Tiles, TileSpread, Prepare, MultiPass, PCF, Gaussian,
-    Resolve;
+  // This frame's screen-space passes, kept by the screen buffers.
+  vtkOpenGLQuadHelper *Tiles = nullptr, *TileSpread = nullptr, *Prepare = nullptr,
+                      *MultiPass = nullptr, *PCF = nullptr, *Gaussian = nullptr, *Resolve = nullptr;
   unsigned int Queries[2] = { 0, 0 }; // did the last blur pass draw any pixel?
   size_t CameraPassFirst = 0;         // the first light the camera pass draws
   std::vector<int> CameraPassUnits;   // texture units of its lights' maps
@@ -75,8 +75,6 @@ public:
   std::vector<float> PassStarts;           // variance before each pass
   std::vector<float> PassInverseVariances; // 1 / each pass's variance
   std::vector<float> FrameTaps;            // this frame's Taps(PoissonTaps)
-  bool Unsupported = false;
-  bool PrepareCarriesWidths = false; // how the prepare pass was built
 
   // Section 3.1: up to 64 Poisson-disk points in [-1,1]^2, the first at the
   // origin.
@@ -103,9 +101,8 @@ public:
     return taps;
   }
 
-  void Draw(vtkShadowScreenBuffers* screen, std::unique_ptr<vtkOpenGLQuadHelper>& quad,
-    vtkTextureObject* input, const std::function<void(vtkShaderProgram*)>& uniforms,
-    float depthTolerance, bool debugView,
+  void Draw(vtkShadowScreenBuffers* screen, vtkOpenGLQuadHelper* quad, vtkTextureObject* input,
+    const std::function<void(vtkShaderProgram*)>& uniforms, float depthTolerance, bool debugView,
     vtkShadowScreenBuffers::QuadMask mask = vtkShadowScreenBuffers::QuadMask::None,
     float quadDepth = 0.5f)
   {
@@ -114,7 +111,7 @@ public:
       input->Activate();
     }
     screen->DrawQuad(
-      quad.get(),
+      quad,
       [&](vtkShaderProgram* program)
       {
         if (input)
@@ -211,36 +208,21 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
   vtkRenderer* renderer = s->GetRenderer();
   auto* context = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   vtkInternals& in = *this->Internals;
-  if (in.Unsupported)
-  {
-    return false;
-  }
-
   // Only receivers that refine read the penumbra widths: the prepare pass
   // codes them (a log2 a pixel) only then.
-  if (in.Prepare && in.PrepareCarriesWidths != this->RefineUnresolved)
+  const std::string common = std::string(vtkContactCommonFS) + "\n";
+  in.Tiles = this->GetScreenQuad("contact.tiles", common + vtkContactTilesFS);
+  in.TileSpread = this->GetScreenQuad("contact.tilespread", common + vtkContactTileSpreadFS);
+  in.Prepare = this->GetScreenQuad("contact.prepare",
+    common + "#define CONTACT_WIDTHS " + (this->RefineUnresolved ? "1" : "0") + "\n" +
+      vtkContactPrepareFS);
+  in.MultiPass = this->GetScreenQuad("contact.multipass", common + vtkContactMultiPassFS);
+  in.PCF = this->GetScreenQuad("contact.pcf", common + vtkContactPCFFS);
+  in.Gaussian = this->GetScreenQuad("contact.gaussian", common + vtkContactGaussianFS);
+  in.Resolve = this->GetScreenQuad("contact.resolve", common + vtkContactResolveFS);
+  if (!in.Tiles || !in.TileSpread || !in.Prepare || !in.MultiPass || !in.PCF || !in.Gaussian ||
+    !in.Resolve)
   {
-    in.Prepare.reset();
-  }
-  in.PrepareCarriesWidths = this->RefineUnresolved;
-  const std::string common = vtkContactCommonFS;
-  auto build = [&](std::unique_ptr<vtkOpenGLQuadHelper>& quad, const std::string& source)
-  {
-    if (!quad)
-    {
-      quad = this->Screen->CreateQuad(context, common + "\n" + source);
-    }
-    return quad->Program != nullptr;
-  };
-  if (!build(in.Tiles, vtkContactTilesFS) || !build(in.TileSpread, vtkContactTileSpreadFS) ||
-    !build(in.Prepare,
-      std::string("#define CONTACT_WIDTHS ") + (this->RefineUnresolved ? "1" : "0") + "\n" +
-        vtkContactPrepareFS) ||
-    !build(in.MultiPass, vtkContactMultiPassFS) || !build(in.PCF, vtkContactPCFFS) ||
-    !build(in.Gaussian, vtkContactGaussianFS) || !build(in.Resolve, vtkContactResolveFS))
-  {
-    vtkErrorMacro("Could not build the contact-hardening shaders.");
-    in.Unsupported = true;
     return false;
   }
 
@@ -515,7 +497,7 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
 
   // Over every pixel, or (`masked`) only where the prepare pass found D > 0,
   // the chain having written the other pixels' codes.
-  auto toPacked = [&](std::unique_ptr<vtkOpenGLQuadHelper>& quad, vtkTextureObject* input,
+  auto toPacked = [&](vtkOpenGLQuadHelper* quad, vtkTextureObject* input,
                     const std::function<void(vtkShaderProgram*)>& uniforms, bool masked = false)
   {
     Targets bound(screen, { packed }, masked ? mask : nullptr);
@@ -643,11 +625,6 @@ void vtkContactHardeningShadowPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);
   vtkInternals& in = *this->Internals;
-  for (auto* quad :
-    { &in.Tiles, &in.TileSpread, &in.Prepare, &in.MultiPass, &in.PCF, &in.Gaussian, &in.Resolve })
-  {
-    quad->reset();
-  }
   if (in.Queries[0])
   {
     glDeleteQueries(2, in.Queries);

@@ -4,7 +4,6 @@
 
 #include "vtkCommand.h"
 #include "vtkObjectFactory.h"
-#include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkRenderState.h"
@@ -29,7 +28,8 @@
 class vtkReferenceShadowPass::vtkInternals
 {
 public:
-  std::unique_ptr<vtkOpenGLQuadHelper> Accumulate, AccumulateCube;
+  // This frame's accumulation passes, kept by the screen buffers.
+  vtkOpenGLQuadHelper *Accumulate = nullptr, *AccumulateCube = nullptr;
   int NormalsUnit = -1; // the camera pass's normals, while accumulating
 };
 
@@ -62,18 +62,14 @@ bool vtkReferenceShadowPass::RenderShadowMaps(const vtkRenderState* s)
 //------------------------------------------------------------------------------
 bool vtkReferenceShadowPass::RenderScreenSpace(const vtkRenderState* s)
 {
-  auto* context = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
   vtkInternals& internals = *this->Internals;
-  if (!internals.Accumulate)
+  const std::string lookups = vtkSoftShadowPass::GetLightSpaceLookupCode();
+  internals.Accumulate =
+    this->GetScreenQuad("reference.accumulate", lookups + vtkReferenceAccumulateFS);
+  internals.AccumulateCube = this->GetScreenQuad(
+    "reference.accumulatecube", lookups + "#define ACCUMULATE_CUBE\n" + vtkReferenceAccumulateFS);
+  if (!internals.Accumulate || !internals.AccumulateCube)
   {
-    const std::string lookups = vtkSoftShadowPass::GetLightSpaceLookupCode();
-    internals.Accumulate = this->Screen->CreateQuad(context, lookups + vtkReferenceAccumulateFS);
-    internals.AccumulateCube = this->Screen->CreateQuad(
-      context, lookups + "#define ACCUMULATE_CUBE\n" + vtkReferenceAccumulateFS);
-  }
-  if (!internals.Accumulate->Program || !internals.AccumulateCube->Program)
-  {
-    vtkErrorMacro("Could not build the accumulation shaders.");
     return false;
   }
 
@@ -192,7 +188,7 @@ bool vtkReferenceShadowPass::AccumulateSample(const vtkRenderState* s, int slot,
   map->Activate();
   if (light.Point)
   {
-    this->Screen->DrawQuad(internals.AccumulateCube.get(),
+    this->Screen->DrawQuad(internals.AccumulateCube,
       [&](vtkShaderProgram* program)
       {
         program->SetUniformi("referenceCube", map->GetTextureUnit());
@@ -205,7 +201,7 @@ bool vtkReferenceShadowPass::AccumulateSample(const vtkRenderState* s, int slot,
   }
   else
   {
-    this->Screen->DrawQuad(internals.Accumulate.get(),
+    this->Screen->DrawQuad(internals.Accumulate,
       [&](vtkShaderProgram* program)
       {
         program->SetUniformi("referenceMap", map->GetTextureUnit());
@@ -218,14 +214,6 @@ bool vtkReferenceShadowPass::AccumulateSample(const vtkRenderState* s, int slot,
   }
   map->Deactivate();
   return true;
-}
-
-//------------------------------------------------------------------------------
-void vtkReferenceShadowPass::ReleaseGraphicsResources(vtkWindow* w)
-{
-  this->Superclass::ReleaseGraphicsResources(w);
-  this->Internals->Accumulate.reset();
-  this->Internals->AccumulateCube.reset();
 }
 
 //------------------------------------------------------------------------------

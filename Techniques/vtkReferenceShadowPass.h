@@ -46,7 +46,6 @@ public:
   static vtkReferenceShadowPass* New();
   vtkTypeMacro(vtkReferenceShadowPass, vtkSoftShadowPass);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-  void ReleaseGraphicsResources(vtkWindow* w) override;
 
   ///@{
   /**

@@ -46,9 +46,9 @@ struct MeshLayout
   bool PerFace = false; ///< once a face (instances or points), not once a corner
   bool Half = false;    ///< binary16 attributes
 
-  bool operator!=(const MeshLayout& other) const
+  bool operator==(const MeshLayout& other) const
   {
-    return this->Drop != other.Drop || this->PerFace != other.PerFace || this->Half != other.Half;
+    return this->Drop == other.Drop && this->PerFace == other.PerFace && this->Half == other.Half;
   }
 };
 
@@ -57,7 +57,6 @@ struct CasterMesh
 {
   vtkSmartPointer<vtkTopologyAwareMeshFilter> Filter;
   std::shared_ptr<vtkShadowGeometry> Geometry;
-  MeshLayout Layout;
 };
 
 // The TAM of a caster's polydata, and the geometry that draws it (shaders
@@ -86,7 +85,6 @@ void BuildMesh(vtkPolyData* data, const MeshLayout& layout, CasterMesh& mesh)
   mesh.Geometry = vtkShadowGeometry::NewShared();
   mesh.Geometry->SetInput(buffer);
   mesh.Geometry->SetHalfFloat(layout.Half);
-  mesh.Layout = layout;
 }
 
 // The fraction of a disc of unit radius on the lit side of a straight edge
@@ -113,7 +111,7 @@ struct vtkSilhouetteShadowPass::Internals
     std::vector<double> LookupKey;
   };
   std::vector<Band> Bands;
-  vtkShadowCasterCache<CasterMesh> Meshes;
+  vtkShadowCasterCache<CasterMesh, MeshLayout> Meshes;
   // Pass 2's shaders, [rectangles around edges][a cube face (no 2D depth
   // map to read)]: the vertex shader's with the common depths.
   std::array<std::array<std::string, 2>, 2> VertexShaders, FragmentShaders;
@@ -223,11 +221,8 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
     layout.PerFace = this->PerFaceAttributes || this->SilhouetteGeometry == EdgeRectangles;
     layout.Half = this->HalfPrecision;
     CasterMesh& mesh = this->Internal->Meshes.Get(
-      caster, [&layout](vtkPolyData* data, CasterMesh& built) { BuildMesh(data, layout, built); });
-    if (mesh.Layout != layout)
-    {
-      BuildMesh(caster.Data, layout, mesh); // the options changed, not the data
-    }
+      caster, [&layout](vtkPolyData* data, CasterMesh& built) { BuildMesh(data, layout, built); },
+      layout);
     mesh.Geometry->SetPrimitive(this->SilhouetteGeometry == EdgeRectangles
         ? vtkShadowGeometry::Primitive::TrianglePoints
         : (layout.PerFace ? vtkShadowGeometry::Primitive::TriangleInstances
@@ -280,14 +275,8 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
     {
       std::vector<float> lookup = BuildLookup(
         this->LookupTexels, rows, band.HalfWidth, band.MaximumPenumbra, this->EdgeWidth, spread);
-      band.Lookup = vtkSmartPointer<vtkTextureObject>::New();
-      band.Lookup->SetContext(context);
-      band.Lookup->SetMinificationFilter(vtkTextureObject::Linear);
-      band.Lookup->SetMagnificationFilter(vtkTextureObject::Linear);
-      band.Lookup->SetWrapS(vtkTextureObject::ClampToEdge);
-      band.Lookup->SetWrapT(vtkTextureObject::ClampToEdge);
-      vtkShadowTextureSpec::SetFloatFormat(band.Lookup, 1);
-      band.Lookup->Create2DFromRaw(4 * this->LookupTexels, rows, 1, VTK_FLOAT, lookup.data());
+      band.Lookup = vtkShadowScreenBuffers::NewFloatTexture(
+        context, 4 * this->LookupTexels, rows, 1, lookup.data(), true);
       band.LookupKey = key;
     }
 

@@ -103,11 +103,12 @@ uniform float vtkShadowLogNear;    // see vtkShadowPackTexel(), vtkShadowScreenC
 uniform float vtkShadowCodesPerLog;
 
 // What the lookups of all lights share (their textures have one size): the
-// gather point, the bilinear weights, the fragment's distance code and how
-// far from it a texel on its surface may lie, set once a fragment by
-// vtkShadowScreenSetup().
+// gather point, the bilinear weights, the fragment's camera distance, its
+// code and how far from it a texel on its surface may lie, set once a
+// fragment by vtkShadowScreenSetup().
 vec2 vtkShadowScreenCorner;
 vec4 vtkShadowScreenWeights; // lower left, lower right, upper left, upper right
+float vtkShadowScreenCameraDistance;
 float vtkShadowScreenFragment;
 float vtkShadowScreenTolerance;
 uniform vec2 vtkShadowTexelFootprint; // a texel's world size: x + y * camera distance
@@ -123,8 +124,9 @@ void vtkShadowScreenSetup(vec4 positionWC)
   vtkShadowScreenWeights =
     vec4(1.0 - f.x, f.x, 1.0 - f.x, f.x) * vec4(1.0 - f.y, 1.0 - f.y, f.y, f.y) + 1.0e-4;
   // The camera sits at the view-space origin.
-  float cameraDistance = distance(positionWC.xyz, vtkShadowViewToWorld[3].xyz);
-  vtkShadowScreenFragment = (log2(cameraDistance) - vtkShadowLogNear) * vtkShadowCodesPerLog + 1.0;
+  vtkShadowScreenCameraDistance = distance(positionWC.xyz, vtkShadowViewToWorld[3].xyz);
+  vtkShadowScreenFragment =
+    (log2(vtkShadowScreenCameraDistance) - vtkShadowLogNear) * vtkShadowCodesPerLog + 1.0;
   // 2% (log2(1.02)) and rounding, plus the change of distance over a texel
   // on this fragment's own plane: on a floor seen nearly edge-on it exceeds
   // 2% from one texel to the next. (The derivatives are the primitive's

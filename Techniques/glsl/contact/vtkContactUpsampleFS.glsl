@@ -5,7 +5,8 @@
 // in light space where the buffer could not resolve a penumbra. Inserted in
 // the receivers' fragment shaders after the framework's receiver code.
 // Uses: vtkSoftShadowReceiverFS.glsl (vtkShadowScreenCodes, vtkShadowScreenDecode,
-// vtkShadowScreenBlend, vtkShadowLookup, vtkShadowReceiver), vtkShadowCubeLookupFS.glsl.
+// vtkShadowScreenBlend, vtkShadowScreenCameraDistance, vtkShadowLookup, vtkShadowReceiver),
+// vtkShadowCubeLookupFS.glsl.
 
 #if CONTACT_REFINE
 float vtkContactTexelSize;    // a screen texel's world size at the fragment
@@ -16,8 +17,8 @@ float vtkContactRadius;       // the penumbra's half width there, world
 // Once a fragment, after vtkShadowScreenSetup().
 void vtkContactScreenSetup(vec4 positionWC)
 {
-  float cameraDistance = distance(positionWC.xyz, vtkShadowViewToWorld[3].xyz);
-  vtkContactTexelSize = vtkShadowTexelFootprint.x + vtkShadowTexelFootprint.y * cameraDistance;
+  vtkContactTexelSize =
+    vtkShadowTexelFootprint.x + vtkShadowTexelFootprint.y * vtkShadowScreenCameraDistance;
   vec3 stepX = dFdx(positionWC.xyz) / vtkShadowScreenScale.x;
   vec3 stepY = dFdy(positionWC.xyz) / vtkShadowScreenScale.y;
   vtkContactLongestStep2 = max(dot(stepX, stepX), dot(stepY, stepY));
