@@ -242,7 +242,8 @@ struct vtkAliasFreeShadowPass::Internals
     std::string(vtkAliasFreeLookup) + "\n" + vtkAliasFreeCastersFS, "#define ALIASFREE_SOFT\n");
   bool Failed = false; ///< a shader did not build: reported once
   bool MemoryReported = false;
-  bool BeyondFaces = false; ///< this frame's lights have maps of what casts beyond faces
+  bool EnclosingReported = false; ///< a light reached the surfaces it lights
+  bool BeyondFaces = false;       ///< this frame's lights have maps of what casts beyond faces
 
   bool BuildPrograms(vtkAliasFreeShadowPass* pass)
   {
@@ -455,6 +456,7 @@ bool vtkAliasFreeShadowPass::RenderScreenSpace(const vtkRenderState* s)
   positions->Deactivate();
   normals->Deactivate();
   in.Casters.Prune(*this->Casters);
+  in.EnclosingReported = in.EnclosingReported && !drawn; // reported again when it recurs
   return drawn;
 }
 
@@ -564,7 +566,10 @@ bool vtkAliasFreeShadowPass::RenderFrustum(
 {
   FrustumPass pass;
   this->BeginFrustum(s, slot, view, first, pass);
-  this->FitFrustumToViewSamples(pass);
+  if (!this->FitFrustumToViewSamples(pass))
+  {
+    return false;
+  }
   this->BuildLists(pass);
   this->PrepareLightSamples(pass);
   if (!this->TestCasters(pass))
@@ -629,14 +634,14 @@ void vtkAliasFreeShadowPass::BeginFrustum(
 }
 
 //------------------------------------------------------------------------------
-void vtkAliasFreeShadowPass::FitFrustumToViewSamples(FrustumPass& pass)
+bool vtkAliasFreeShadowPass::FitFrustumToViewSamples(FrustumPass& pass)
 {
   // 1. The view samples' bounds in the light's map (section 4.3).
   Internals& in = *this->Internal;
   const vtkShadowFrustum& view = pass.View;
   const int mapSize = this->MapSize;
   const int initial[8] = { Ordered(2.0f), Ordered(-2.0f), Ordered(2.0f), Ordered(-2.0f),
-    Ordered(-VTK_FLOAT_MAX), 0, 0, 0 };
+    Ordered(-VTK_FLOAT_MAX), 0, 0, Ordered(VTK_FLOAT_MAX) };
   in.StatsBuffer.Allocate(sizeof initial, initial);
   in.StatsBuffer.BindStorage(Stats);
   const glm::dmat4 lightToClip = view.Projection * view.View;
@@ -645,6 +650,22 @@ void vtkAliasFreeShadowPass::FitFrustumToViewSamples(FrustumPass& pass)
   vtkShadowCompute::Barrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   int stats[8];
   in.StatsBuffer.Read(stats, sizeof stats);
+  // A light whose sphere reaches a surface it lights has no outside to see
+  // it from, and every triangle's influence region would cover the map:
+  // minutes a frame, for no meaningful shadow. Refused instead.
+  const float nearest = FromOrdered(stats[7]);
+  if (pass.Soft && !pass.Light->Directional && pass.Reach >= nearest)
+  {
+    if (!in.EnclosingReported)
+    {
+      vtkErrorMacro("aliasfree: light " << pass.Slot << "'s radius (" << pass.Reach
+                                        << ") reaches a surface it lights (" << nearest
+                                        << " from its centre): drawing without shadows. Make the "
+                                           "light smaller than its distance to the scene.");
+      in.EnclosingReported = true;
+    }
+    return false;
+  }
   vtkShadowFrustum& fitted = pass.Fitted;
   pass.Far = std::max(FromOrdered(stats[4]), static_cast<float>(view.Near));
   if (this->FitToViewSamples && stats[0] <= stats[1])
@@ -668,6 +689,7 @@ void vtkAliasFreeShadowPass::FitFrustumToViewSamples(FrustumPass& pass)
       glm::scale(glm::dmat4(1.0), glm::dvec3(0.5)) * fitted.Projection * fitted.View;
   }
   pass.WorldToClip = fitted.Projection * fitted.View;
+  return true;
 }
 
 //------------------------------------------------------------------------------

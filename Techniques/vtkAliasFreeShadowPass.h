@@ -244,7 +244,7 @@ private:
   bool RenderFrustum(const vtkRenderState* s, int slot, const vtkShadowFrustum& view, bool first);
   void BeginFrustum(
     const vtkRenderState* s, int slot, const vtkShadowFrustum& view, bool first, FrustumPass& pass);
-  void FitFrustumToViewSamples(FrustumPass& pass);
+  bool FitFrustumToViewSamples(FrustumPass& pass);
   void BuildLists(FrustumPass& pass);
   void PrepareLightSamples(FrustumPass& pass);
   bool TestCasters(FrustumPass& pass);

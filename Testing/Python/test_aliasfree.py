@@ -16,6 +16,7 @@ import copy
 import json
 import os
 import tempfile
+import time
 
 import numpy as np
 
@@ -349,6 +350,26 @@ st.check(result.returncode == 1 and result.stderr.count("this frame needs") == 2
          "MemoryLimit" in result.stderr and visibility.min() > 0.99,
          "over MemoryLimit: one error naming it, the frame unshadowed (%s)"
          % result.stderr.strip().splitlines()[-1][-160:])
+
+# A light so large that it reaches the surfaces it lights: one clear error,
+# at once, drawn without shadows (before, minutes a frame: every triangle's
+# influence region covered the map).
+scene = st.ball_scene(height=1.0, light_radius=1.0e6, technique="aliasfree", size=SIZE)
+with tempfile.TemporaryDirectory() as folder:
+    scene_file = os.path.join(folder, "scene.json")
+    with open(scene_file, "w") as f:
+        json.dump(scene, f)
+    output = os.path.join(folder, "out.png")
+    start = time.monotonic()
+    result = st.run(["render", scene_file, "--shadow-only", "--output", output], check=False)
+    seconds = time.monotonic() - start
+    pixels = st.read_png(output)
+    visibility = pixels[:, :, 0][pixels[:, :, 1] == 255] / 255.0
+last = result.stderr.strip().splitlines()[-1]
+st.check(result.returncode == 1 and result.stderr.count("reaches a surface it lights") == 2 and
+         last.startswith("softshadows: error:") and visibility.min() > 0.99 and seconds < 60,
+         "a light of radius 1e6: one error in %.1f s, the frame unshadowed (%s)"
+         % (seconds, last[-160:]))
 
 # The view samples of a 2048x2048 window, and a caster of a million
 # triangles: right hard shadows, no error.

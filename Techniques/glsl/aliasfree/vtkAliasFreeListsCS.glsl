@@ -38,7 +38,8 @@ layout(std430, binding = 3) buffer aliasfreePixelsBuffer { uvec2 aliasfreePixels
 layout(std430, binding = 4) buffer aliasfreeSamplesBuffer { vec4 aliasfreeSamples[]; };
 layout(std430, binding = 5) buffer aliasfreeHiddenBuffer { uint aliasfreeHidden[]; };
 // Bounds as order-preserving integers: x min, max, y min, max (clip / w),
-// depth max; then the longest list and the number of samples.
+// depth max; then the longest list and the number of samples; then the
+// nearest sample's distance to a positional light's centre.
 layout(std430, binding = 7) buffer aliasfreeStatsBuffer { int aliasfreeStats[]; };
 
 const uint aliasfreeNone = 0xffffffffu;
@@ -110,14 +111,14 @@ bool aliasfreeViewSample(out vec3 position, out vec2 ndc, out uint why)
 // The work group's statistics, reduced in shared memory first: one global
 // atomic per work group instead of one per sample, which all hit the same
 // few words.
-shared int aliasfreeGroupStats[7];
+shared int aliasfreeGroupStats[8];
 
 void aliasfreeBeginStats()
 {
   // Identities: the largest integer for minima, the smallest for maxima, 0 for sums.
-  const int identity[7] = int[7](0x7fffffff, -0x7fffffff - 1, 0x7fffffff, -0x7fffffff - 1,
-    -0x7fffffff - 1, 0, 0);
-  if (gl_LocalInvocationIndex < 7u)
+  const int identity[8] = int[8](0x7fffffff, -0x7fffffff - 1, 0x7fffffff, -0x7fffffff - 1,
+    -0x7fffffff - 1, 0, 0, 0x7fffffff);
+  if (gl_LocalInvocationIndex < 8u)
   {
     aliasfreeGroupStats[gl_LocalInvocationIndex] = identity[gl_LocalInvocationIndex];
   }
@@ -135,6 +136,7 @@ void aliasfreeEndStats()
     atomicMin(aliasfreeStats[2], aliasfreeGroupStats[2]);
     atomicMax(aliasfreeStats[3], aliasfreeGroupStats[3]);
     atomicMax(aliasfreeStats[4], aliasfreeGroupStats[4]);
+    atomicMin(aliasfreeStats[7], aliasfreeGroupStats[7]);
 #else
     atomicMax(aliasfreeStats[5], aliasfreeGroupStats[5]);
     atomicAdd(aliasfreeStats[6], aliasfreeGroupStats[6]);
@@ -157,6 +159,10 @@ void main()
     atomicMin(aliasfreeGroupStats[2], aliasfreeOrdered(ndc.y));
     atomicMax(aliasfreeGroupStats[3], aliasfreeOrdered(ndc.y));
     atomicMax(aliasfreeGroupStats[4], aliasfreeOrdered(dot(p - aliasfreeEye, aliasfreeAxis)));
+    if (aliasfreeLight.w > 0.0)
+    {
+      atomicMin(aliasfreeGroupStats[7], aliasfreeOrdered(distance(p, aliasfreeLight.xyz)));
+    }
   }
   aliasfreeEndStats();
 }
