@@ -49,7 +49,13 @@
  * Translucent surfaces, which give no view samples, keep the framework's
  * hard shadow-map lookup. Memory for the lists and masks is reported
  * (GetMemoryBytes()) and bounded by MemoryLimit: a frame that would exceed it
- * is drawn unshadowed with an error.
+ * is drawn unshadowed with an error. So is a frame whose soft spot or point
+ * light reaches a surface it lights (its radius at least that surface's
+ * distance from its centre), whose work would have no bound.
+ *
+ * The work of soft shadows grows with the casters' triangles times their
+ * influence regions' texels in the map (wider with a larger light or a
+ * larger map), hardly with the pixels: see docs/benchmarks.md, "Scale".
  *
  * @sa vtkSoftShadowPass vtkShadowCompute
  */
