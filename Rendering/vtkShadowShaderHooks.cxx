@@ -130,7 +130,12 @@ void vtkShadowShaderHooks::SetStage(vtkShadowStage* stage, const float (*faceFro
 //------------------------------------------------------------------------------
 void vtkShadowShaderHooks::Attach(const vtkRenderState* s)
 {
-  this->Window = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
+  if (window != this->Window)
+  {
+    this->Compiled.clear(); // compiled in another window's context
+    this->Window = window;
+  }
   this->PreRender(s);
   vtkNew<vtkPropCollection> parts;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
@@ -234,17 +239,27 @@ bool vtkShadowShaderHooks::PostReplaceShaderValues(std::string& vertexShader,
     return true;
   }
 
-  const size_t hash =
-    std::hash<std::string>()(vertexShader + '\0' + geometryShader + '\0' + fragmentShader);
-  std::string log, details;
-  const bool known = this->Failed.count(hash) > 0;
-  if (!known && this->Compiles(sources, &log, &details))
+  // Three hashes combined, as boost::hash_combine does, rather than one of a
+  // concatenated copy.
+  size_t hash = 0;
+  for (const std::string* source : { &vertexShader, &geometryShader, &fragmentShader })
+  {
+    hash ^= std::hash<std::string>()(*source) + 0x9e3779b9 + (hash << 6) + (hash >> 2);
+  }
+  auto known = this->Compiled.find(hash);
+  if (known != this->Compiled.end() && known->second)
   {
     return true;
   }
-  if (!known)
+  if (known == this->Compiled.end())
   {
-    this->Failed.insert(hash);
+    std::string log, details;
+    const bool compiles = this->Compiles(sources, &log, &details);
+    this->Compiled[hash] = compiles;
+    if (compiles)
+    {
+      return true;
+    }
     vtkObject* owner = this->Owner ? this->Owner : this;
     std::string message = "The shader of " + this->Stage->GetName() + " for " +
       (mapper ? mapper->GetClassName() : "a mapper") +
@@ -270,6 +285,14 @@ bool vtkShadowShaderHooks::PostReplaceShaderValues(std::string& vertexShader,
     vtkShaderProgram::Substitute(*source, vtkShadowMapperCode::ShadowImpl, "", false);
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowShaderHooks::ReleaseGraphicsResources(vtkWindow* w)
+{
+  // The window's cache forgets its programs: the next build compiles again.
+  this->Compiled.clear();
+  this->Superclass::ReleaseGraphicsResources(w);
 }
 
 //------------------------------------------------------------------------------

@@ -29,10 +29,11 @@
 #include "vtkSmartPointer.h"               // for vtkSmartPointer
 #include "vtkSoftShadowsRenderingModule.h" // for export macro
 
-#include <set>     // for std::set
-#include <string>  // for std::string
-#include <utility> // for std::pair
-#include <vector>  // for std::vector
+#include <set>           // for std::set
+#include <string>        // for std::string
+#include <unordered_map> // for std::unordered_map
+#include <utility>       // for std::pair
+#include <vector>        // for std::vector
 
 class vtkInformation;
 class vtkObject;
@@ -83,6 +84,7 @@ public:
   bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
     vtkOpenGLVertexArrayObject* vao = nullptr) override;
   vtkMTimeType GetShaderStageMTime() override { return this->StageTime; }
+  void ReleaseGraphicsResources(vtkWindow* w) override;
 
 protected:
   vtkShadowShaderHooks();
@@ -103,7 +105,10 @@ private:
   vtkShadowStage* Stage = nullptr;
   vtkObject* Owner = nullptr;
   vtkOpenGLRenderWindow* Window = nullptr; ///< of the last Attach()
-  std::set<size_t> Failed;                 ///< hashes of the programs that failed
+  // Whether each program (by the hash of its sources) compiled and linked:
+  // the mapper rebuilds its sources each time the stage changes, twice a
+  // frame, and a trial compile hashes them with MD5 the way its cache does.
+  std::unordered_map<size_t, bool> Compiled;
   const float (*FaceFromFirst)[16] = nullptr;
   vtkTimeStamp StageTime;
   std::set<std::pair<std::string, std::string>> Reported; ///< (mapper class, edit) warned about
