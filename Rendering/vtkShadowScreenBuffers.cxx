@@ -113,17 +113,17 @@ std::unique_ptr<vtkOpenGLQuadHelper> vtkShadowScreenBuffers::CreateQuad(
 }
 
 //------------------------------------------------------------------------------
-vtkOpenGLQuadHelper* vtkShadowScreenBuffers::GetQuad(
-  const std::string& name, const std::string& fragmentSource, bool* failed)
+vtkOpenGLQuadHelper* vtkShadowScreenBuffers::GetQuad(const std::string& name,
+  const std::string& variant, const std::function<std::string()>& source, bool* failed)
 {
   auto found = this->Quads.find(name);
-  if (found != this->Quads.end() && found->second.Source == fragmentSource)
+  if (found != this->Quads.end() && found->second.Variant == variant)
   {
     return found->second.Quad.get();
   }
   KeptQuad& kept = this->Quads[name];
-  kept.Source = fragmentSource;
-  kept.Quad = this->CreateQuad(this->Context, fragmentSource);
+  kept.Variant = variant;
+  kept.Quad = this->CreateQuad(this->Context, source());
   if (!kept.Quad->Program)
   {
     kept.Quad.reset();

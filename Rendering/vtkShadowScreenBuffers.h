@@ -70,13 +70,14 @@ public:
 
   /**
    * A technique's full-screen pass, kept with the buffers as GetTexture()
-   * keeps textures: CreateQuad() of `fragmentSource` on first use and again
-   * when the source changes, released with the buffers. nullptr when it
-   * does not build (VTK logs the compiler's output); a source that failed
-   * is not built again, and only that first time is `failed` set.
+   * keeps textures: CreateQuad() of `source()` on first use and again when
+   * `variant` (what the source depends on, e.g. a define's value) changes,
+   * released with the buffers; `source` is called only then. nullptr when
+   * it does not build (VTK logs the compiler's output); a variant that
+   * failed is not built again, and only that first time is `failed` set.
    */
-  vtkOpenGLQuadHelper* GetQuad(
-    const std::string& name, const std::string& fragmentSource, bool* failed = nullptr);
+  vtkOpenGLQuadHelper* GetQuad(const std::string& name, const std::string& variant,
+    const std::function<std::string()>& source, bool* failed = nullptr);
 
   /**
    * How a quad uses the target's depth buffer as a pixel mask, so that later
@@ -264,8 +265,8 @@ private:
   std::map<std::string, vtkSmartPointer<vtkTextureObject>> Textures;
   struct KeptQuad
   {
-    std::string Source;
-    std::unique_ptr<vtkOpenGLQuadHelper> Quad; ///< null when Source failed
+    std::string Variant;
+    std::unique_ptr<vtkOpenGLQuadHelper> Quad; ///< null when Variant failed
   };
   std::map<std::string, KeptQuad> Quads;
   int MaximumTargets = 0;

@@ -436,10 +436,10 @@ bool vtkSoftShadowPass::RenderLightDepthMaps(const vtkRenderState* s, bool linea
 
 //------------------------------------------------------------------------------
 vtkOpenGLQuadHelper* vtkSoftShadowPass::GetScreenQuad(
-  const std::string& name, const std::string& fragmentSource)
+  const std::string& name, const std::function<std::string()>& source, const std::string& variant)
 {
   bool failed = false;
-  vtkOpenGLQuadHelper* quad = this->Screen->GetQuad(name, fragmentSource, &failed);
+  vtkOpenGLQuadHelper* quad = this->Screen->GetQuad(name, variant, source, &failed);
   if (failed)
   {
     vtkErrorMacro("The screen-space pass " << name

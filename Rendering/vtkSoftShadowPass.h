@@ -394,11 +394,13 @@ protected:
   virtual bool RenderScreenSpace(const vtkRenderState*) { return true; }
   /**
    * Helper for RenderScreenSpace(): the technique's full-screen pass `name`
-   * (vtkShadowScreenBuffers::GetQuad()), built from `fragmentSource` on first
-   * use and again when the source changes. nullptr when it does not build,
-   * reported once; the pass then draws without shadows.
+   * (vtkShadowScreenBuffers::GetQuad()), built from `source()` on first use
+   * and again when `variant` (what the source depends on) changes. nullptr
+   * when it does not build, reported once; the pass then draws without
+   * shadows.
    */
-  vtkOpenGLQuadHelper* GetScreenQuad(const std::string& name, const std::string& fragmentSource);
+  vtkOpenGLQuadHelper* GetScreenQuad(const std::string& name,
+    const std::function<std::string()>& source, const std::string& variant = std::string());
 
   /// A technique's code in the camera pass (vtkShadowCameraStage.h).
   using CameraPassCode = vtkShadowCameraPassCode;

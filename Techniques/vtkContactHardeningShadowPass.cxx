@@ -208,18 +208,19 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
   vtkRenderer* renderer = s->GetRenderer();
   auto* context = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   vtkInternals& in = *this->Internals;
+  auto withCommon = [](const char* source, const std::string& defines = std::string())
+  { return [=]() { return std::string(vtkContactCommonFS) + "\n" + defines + source; }; };
+  in.Tiles = this->GetScreenQuad("contact.tiles", withCommon(vtkContactTilesFS));
+  in.TileSpread = this->GetScreenQuad("contact.tilespread", withCommon(vtkContactTileSpreadFS));
   // Only receivers that refine read the penumbra widths: the prepare pass
   // codes them (a log2 a pixel) only then.
-  const std::string common = std::string(vtkContactCommonFS) + "\n";
-  in.Tiles = this->GetScreenQuad("contact.tiles", common + vtkContactTilesFS);
-  in.TileSpread = this->GetScreenQuad("contact.tilespread", common + vtkContactTileSpreadFS);
+  const std::string widths = this->RefineUnresolved ? "1" : "0";
   in.Prepare = this->GetScreenQuad("contact.prepare",
-    common + "#define CONTACT_WIDTHS " + (this->RefineUnresolved ? "1" : "0") + "\n" +
-      vtkContactPrepareFS);
-  in.MultiPass = this->GetScreenQuad("contact.multipass", common + vtkContactMultiPassFS);
-  in.PCF = this->GetScreenQuad("contact.pcf", common + vtkContactPCFFS);
-  in.Gaussian = this->GetScreenQuad("contact.gaussian", common + vtkContactGaussianFS);
-  in.Resolve = this->GetScreenQuad("contact.resolve", common + vtkContactResolveFS);
+    withCommon(vtkContactPrepareFS, "#define CONTACT_WIDTHS " + widths + "\n"), widths);
+  in.MultiPass = this->GetScreenQuad("contact.multipass", withCommon(vtkContactMultiPassFS));
+  in.PCF = this->GetScreenQuad("contact.pcf", withCommon(vtkContactPCFFS));
+  in.Gaussian = this->GetScreenQuad("contact.gaussian", withCommon(vtkContactGaussianFS));
+  in.Resolve = this->GetScreenQuad("contact.resolve", withCommon(vtkContactResolveFS));
   if (!in.Tiles || !in.TileSpread || !in.Prepare || !in.MultiPass || !in.PCF || !in.Gaussian ||
     !in.Resolve)
   {

@@ -63,11 +63,14 @@ bool vtkReferenceShadowPass::RenderShadowMaps(const vtkRenderState* s)
 bool vtkReferenceShadowPass::RenderScreenSpace(const vtkRenderState* s)
 {
   vtkInternals& internals = *this->Internals;
-  const std::string lookups = vtkSoftShadowPass::GetLightSpaceLookupCode();
-  internals.Accumulate =
-    this->GetScreenQuad("reference.accumulate", lookups + vtkReferenceAccumulateFS);
-  internals.AccumulateCube = this->GetScreenQuad(
-    "reference.accumulatecube", lookups + "#define ACCUMULATE_CUBE\n" + vtkReferenceAccumulateFS);
+  internals.Accumulate = this->GetScreenQuad("reference.accumulate",
+    []() { return vtkSoftShadowPass::GetLightSpaceLookupCode() + vtkReferenceAccumulateFS; });
+  internals.AccumulateCube = this->GetScreenQuad("reference.accumulatecube",
+    []()
+    {
+      return vtkSoftShadowPass::GetLightSpaceLookupCode() + "#define ACCUMULATE_CUBE\n" +
+        vtkReferenceAccumulateFS;
+    });
   if (!internals.Accumulate || !internals.AccumulateCube)
   {
     return false;

@@ -265,11 +265,13 @@ vtkSmartPointer<vtkPolyData> MakeGyroid(const Json& p)
   // A sample beyond the ball on every side, so that its surface closes.
   const double extent = radius * (1.0 + 2.5 / n);
   const double spacing = 2.0 * extent / (n - 1);
-  std::vector<double> sines(n), cosines(n);
+  // The grid's coordinate along each axis, and its sine and cosine.
+  std::vector<double> coordinates(n), sines(n), cosines(n);
   for (int i = 0; i < n; ++i)
   {
-    sines[i] = std::sin(k * (-extent + i * spacing));
-    cosines[i] = std::cos(k * (-extent + i * spacing));
+    coordinates[i] = -extent + i * spacing;
+    sines[i] = std::sin(k * coordinates[i]);
+    cosines[i] = std::cos(k * coordinates[i]);
   }
   vtkNew<vtkImageData> grid;
   grid->SetDimensions(n, n, n);
@@ -287,8 +289,7 @@ vtkSmartPointer<vtkPolyData> MakeGyroid(const Json& p)
         // Both terms in world units: inside where both are negative.
         const double g = sines[x] * cosines[y] + sines[y] * cosines[z] + sines[z] * cosines[x];
         const double sheet = (std::abs(g) - half) / k;
-        const double px = -extent + x * spacing, py = -extent + y * spacing,
-                     pz = -extent + z * spacing;
+        const double px = coordinates[x], py = coordinates[y], pz = coordinates[z];
         const double ball = std::sqrt(px * px + py * py + pz * pz) - radius;
         field->SetValue(id, static_cast<float>(std::max(sheet, ball)));
       }
