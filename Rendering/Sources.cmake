@@ -33,7 +33,8 @@ set(softshadows_rendering_framework_headers
 
 # Internals, not installed.
 set(softshadows_rendering_private_classes
-  vtkShadowGlyphInstances)
+  vtkShadowGlyphInstances
+  vtkShadowMapperTwins)
 
 # The framework's shaders (the techniques' own live in Techniques/glsl/).
 set(softshadows_rendering_shaders

@@ -48,6 +48,17 @@ void vtkShadowCameraStage::PostReplace(vtkShadowShaderSources& sources)
 }
 
 //------------------------------------------------------------------------------
+bool vtkShadowCameraStage::GetCodeKey(std::string& key) const
+{
+  key = std::to_string(this->Targets);
+  if (this->Code)
+  {
+    key += "\n" + this->Code->Declarations + "\n" + this->Code->Implementation;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void vtkShadowCameraStage::SetUniforms(vtkShaderProgram* program, vtkProp*)
 {
   if (program->IsUniformUsed("vtkShadowViewToWorld"))

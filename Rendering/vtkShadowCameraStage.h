@@ -50,6 +50,7 @@ public:
   void PostReplace(vtkShadowShaderSources& sources) override;
   void SetUniforms(vtkShaderProgram* program, vtkProp* prop) override;
   std::string GetName() const override { return "the camera pass"; }
+  bool GetCodeKey(std::string& key) const override;
 
 private:
   const vtkShadowCameraPassCode* Code = nullptr;

@@ -31,6 +31,11 @@ public:
 
   void PreReplace(vtkShadowShaderSources& sources) override;
   void PostReplace(vtkShadowShaderSources& sources) override;
+  bool GetCodeKey(std::string& key) const override
+  {
+    key = this->LightSpace ? "light" : "camera";
+    return true;
+  }
 
 private:
   bool LightSpace = true;

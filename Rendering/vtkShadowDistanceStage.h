@@ -39,6 +39,12 @@ public:
   void Begin(const vtkShadowDrawSetup& setup) override;
   void PreReplace(vtkShadowShaderSources& sources) override;
   void PostReplace(vtkShadowShaderSources& sources) override;
+  /// Its code is the same for every draw: packing, linear depth and the face are uniforms.
+  bool GetCodeKey(std::string& key) const override
+  {
+    key.clear();
+    return true;
+  }
   void SetUniforms(vtkShaderProgram* program, vtkProp* prop) override;
 
 private:

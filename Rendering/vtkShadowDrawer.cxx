@@ -13,6 +13,7 @@
 #include "vtkRenderer.h"
 #include "vtkShadowCasterRegistry.h"
 #include "vtkShadowGeometry.h"
+#include "vtkShadowMapperTwins.h"
 #include "vtkShadowMatrices.h"
 #include "vtkShadowShaderHooks.h"
 #include "vtkShadowStage.h"
@@ -25,6 +26,7 @@
 
 vtkShadowDrawer::vtkShadowDrawer(const vtkShadowCasterRegistry& casters)
   : Casters(casters)
+  , Twins(new vtkShadowMapperTwins)
 {
 }
 
@@ -277,14 +279,19 @@ bool vtkShadowDrawer::Draw(const vtkRenderState* s, const vtkShadowDrawSetup& se
     drawState.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
     drawState.SetFrameBuffer(this->Framebuffer);
     setup.Stage->Begin(setup);
-    this->Hooks->SetStage(setup.Stage, layered ? faceFromFirst : nullptr);
-    this->Hooks->Attach(&drawState);
+    vtkShadowShaderHooks* hooks = this->GetHooks(setup.Stage);
+    hooks->SetStage(setup.Stage, layered ? faceFromFirst : nullptr);
+    hooks->Attach(&drawState);
     for (vtkProp* prop : props)
     {
-      prop->RenderOpaqueGeometry(renderer);
+      if (!this->Twins->RenderOpaqueGeometry(prop, renderer, setup.Stage))
+      {
+        prop->RenderOpaqueGeometry(renderer);
+      }
     }
-    this->Hooks->Detach(&drawState);
-    this->Hooks->SetStage(nullptr);
+    this->Twins->EndDraw();
+    hooks->Detach(&drawState);
+    hooks->SetStage(nullptr);
     setup.Stage->End();
   }
   if (!setup.Geometry.empty())
@@ -339,5 +346,31 @@ void vtkShadowDrawer::ReleaseGraphicsResources(vtkWindow* w)
     this->Framebuffer->ReleaseGraphicsResources(w);
     this->Framebuffer = nullptr;
   }
-  this->Hooks->ReleaseGraphicsResources(w);
+  for (auto& hooks : this->Hooks)
+  {
+    hooks.second->ReleaseGraphicsResources(w);
+  }
+  this->Twins->ReleaseGraphicsResources(w);
+}
+
+//------------------------------------------------------------------------------
+vtkShadowShaderHooks* vtkShadowDrawer::GetHooks(vtkShadowStage* stage)
+{
+  vtkSmartPointer<vtkShadowShaderHooks>& hooks = this->Hooks[stage];
+  if (!hooks)
+  {
+    hooks = vtkSmartPointer<vtkShadowShaderHooks>::New();
+    hooks->SetOwner(this->Owner);
+  }
+  return hooks;
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowDrawer::SetOwner(vtkObject* owner)
+{
+  this->Owner = owner;
+  for (auto& hooks : this->Hooks)
+  {
+    hooks.second->SetOwner(owner);
+  }
 }

@@ -31,9 +31,12 @@
 
 #include <array>      // for std::array
 #include <functional> // for std::function
+#include <map>        // for std::map
+#include <memory>     // for std::unique_ptr
 #include <utility>    // for std::move
 #include <vector>     // for std::vector
 
+class vtkObject;
 class vtkOpenGLCamera;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
@@ -42,6 +45,7 @@ class vtkRenderState;
 class vtkShadowCasterRegistry;
 class vtkShaderProgram;
 class vtkShadowGeometry;
+class vtkShadowMapperTwins;
 class vtkShadowShaderHooks;
 class vtkShadowStage;
 class vtkTextureObject;
@@ -139,10 +143,20 @@ public:
   bool Draw(const vtkRenderState* s, const vtkShadowDrawSetup& setup);
 
   /**
-   * The mapper hooks: a render pass registered on props while a stage is
-   * active. The receivers' pass attaches it around its delegate.
+   * The mapper hooks of draws through `stage`: a render pass registered on
+   * props while the stage is active. The receivers' pass attaches its
+   * stage's around its delegate. One a stage, so that a mapper drawn
+   * through one stage a frame keeps its program from frame to frame (VTK
+   * rebuilds a mapper's shaders whenever its render passes change).
    */
-  vtkShadowShaderHooks* GetHooks() { return this->Hooks; }
+  vtkShadowShaderHooks* GetHooks(vtkShadowStage* stage);
+  /// Every stage's hooks made so far.
+  const std::map<vtkShadowStage*, vtkSmartPointer<vtkShadowShaderHooks>>& GetAllHooks() const
+  {
+    return this->Hooks;
+  }
+  /// Who reports the shaders that fail (vtkShadowShaderHooks::SetOwner()).
+  void SetOwner(vtkObject* owner);
 
   void ReleaseGraphicsResources(vtkWindow* w);
 
@@ -157,7 +171,10 @@ private:
   bool BindLayered(vtkOpenGLRenderWindow* context, vtkTextureObject* cube);
 
   const vtkShadowCasterRegistry& Casters;
-  vtkNew<vtkShadowShaderHooks> Hooks;
+  std::map<vtkShadowStage*, vtkSmartPointer<vtkShadowShaderHooks>> Hooks;
+  vtkObject* Owner = nullptr;
+  /// Small meshes' second mappers, so that each draws in one stage (vtkShadowMapperTwins.h).
+  std::unique_ptr<vtkShadowMapperTwins> Twins;
   vtkSmartPointer<vtkOpenGLCamera> Camera;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   vtkSmartPointer<vtkTextureObject> ScratchDepth; ///< z-buffer of draws without a depth target

@@ -176,6 +176,37 @@ void vtkShadowReceiverStage::PostReplace(vtkShadowShaderSources& sources)
 }
 
 //------------------------------------------------------------------------------
+bool vtkShadowReceiverStage::GetCodeKey(std::string& key) const
+{
+  const Frame& frame = this->Current;
+  std::ostringstream k;
+  k << (frame.Screen ? 1 : 0) << ' ' << frame.TextureUnits << ' ' << frame.TexturesPerFrame << ' '
+    << frame.TexturesPerLight << ' ' << frame.ShadowOnlyLight << ' ' << frame.Technique << ' '
+    << frame.ShadingKey << '\n';
+  for (const std::string& extension : frame.Extensions)
+  {
+    k << extension << ' ';
+  }
+  const auto& lights = frame.Maps->GetLights();
+  for (const auto& light : lights)
+  {
+    k << light.ShaderIndex << ':' << light.SceneIndex << ':' << light.Point << ' ';
+  }
+  k << '\n' << frame.Code.Declarations << '\n' << frame.Code.Setup << '\n';
+  for (const auto& texture : frame.Code.Textures)
+  {
+    k << texture.Sampler << ' ' << texture.Name << ';';
+  }
+  const auto& visibility = frame.Code.Visibility ? frame.Code.Visibility : frame.DefaultVisibility;
+  for (size_t slot = 0; slot < lights.size(); ++slot)
+  {
+    k << '\n' << visibility(static_cast<int>(slot));
+  }
+  key = k.str();
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void vtkShadowReceiverStage::SetUniforms(vtkShaderProgram* program, vtkProp* prop)
 {
   const Frame& frame = this->Current;

@@ -102,6 +102,9 @@ public:
     bool PackedCubeMaps = false;
     int ShadowOnlyLight = -1; ///< the scene's light whose visibility alone is drawn
     std::string Technique;    ///< the technique's class, for messages
+    /// What Shading() depends on besides the lights (e.g. the technique's
+    /// modification time): part of the stage's code key.
+    std::string ShadingKey;
   };
 
   void SetFrame(Frame frame) { this->Current = std::move(frame); }
@@ -121,6 +124,8 @@ public:
   void PostReplace(vtkShadowShaderSources& sources) override;
   void SetUniforms(vtkShaderProgram* program, vtkProp* prop) override;
   std::string GetName() const override { return "the receivers"; }
+  /// Everything of the frame that goes into the receivers' code.
+  bool GetCodeKey(std::string& key) const override;
 
 private:
   Frame Current;

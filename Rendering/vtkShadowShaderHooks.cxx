@@ -119,12 +119,23 @@ vtkShadowShaderHooks::~vtkShadowShaderHooks() = default;
 //------------------------------------------------------------------------------
 void vtkShadowShaderHooks::SetStage(vtkShadowStage* stage, const float (*faceFromFirst)[16])
 {
-  if (stage != this->Stage || faceFromFirst != this->FaceFromFirst)
+  this->Stage = stage;
+  this->FaceFromFirst = faceFromFirst;
+  if (!stage)
   {
-    this->Stage = stage;
-    this->FaceFromFirst = faceFromFirst;
+    return; // between draws: no mapper builds through these hooks
+  }
+  // The mappers build their programs again only when the code would change:
+  // another stage, another key, layered or not.
+  std::string key;
+  const bool keyed = stage->GetCodeKey(key);
+  key += faceFromFirst ? "\nlayered" : "\nflat";
+  if (!keyed || stage != this->KeyedStage || key != this->Key)
+  {
     this->StageTime.Modified();
   }
+  this->KeyedStage = keyed ? stage : nullptr;
+  this->Key = keyed ? key : std::string();
 }
 
 //------------------------------------------------------------------------------

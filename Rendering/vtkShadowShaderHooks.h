@@ -5,11 +5,13 @@
  * @brief   The render pass VTK's mappers see while the framework draws: it
  *          forwards their shader hooks to the active vtkShadowStage.
  *
- * Part of the framework (vtkShadowDrawer owns it). Registered on props
- * around a draw (Attach(), Detach()), it hands each mapper's shader sources
- * to the stage, adds the layered geometry shader when a draw fills all six
- * faces of a cube map, and warns once per mapper class and edit when a
- * stage's required edit found nothing to edit. Its Render() draws nothing.
+ * Part of the framework (vtkShadowDrawer owns one a stage). Registered on
+ * props around a draw (Attach(), Detach()), it hands each mapper's shader
+ * sources to the stage, adds the layered geometry shader when a draw fills
+ * all six faces of a cube map, and warns once per mapper class and edit
+ * when a stage's required edit found nothing to edit. Its Render() draws
+ * nothing. The mappers rebuild their shaders only when the stage's code
+ * key changes (SetStage()).
  *
  * It also compiles each program the stage edited, as the mapper is about to
  * ask for it, through the window's shader cache (so it still compiles once):
@@ -49,10 +51,12 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
-   * The stage the mappers' hooks go to (null: none). `faceFromFirst`, six
-   * column-major matrices, makes the draw layered: every triangle goes to
-   * the six faces of a cube map, face f's clip position being
-   * faceFromFirst[f] times face 0's.
+   * The stage the mappers' hooks go to (null: none, between draws).
+   * `faceFromFirst`, six column-major matrices, makes the draw layered: every
+   * triangle goes to the six faces of a cube map, face f's clip position
+   * being faceFromFirst[f] times face 0's. The mappers build their shaders
+   * again only when the stage, its code key (vtkShadowStage::GetCodeKey())
+   * or the layering differs from the last draw's.
    */
   void SetStage(vtkShadowStage* stage, const float (*faceFromFirst)[16] = nullptr);
   vtkShadowStage* GetStage() const { return this->Stage; }
@@ -111,6 +115,8 @@ private:
   std::unordered_map<size_t, bool> Compiled;
   const float (*FaceFromFirst)[16] = nullptr;
   vtkTimeStamp StageTime;
+  vtkShadowStage* KeyedStage = nullptr; ///< the stage of the last draw, when it had a key
+  std::string Key;                      ///< and that key
   std::set<std::pair<std::string, std::string>> Reported; ///< (mapper class, edit) warned about
 };
 

@@ -111,6 +111,20 @@ public:
   /// What the stage draws, for messages ("the receivers").
   virtual std::string GetName() const { return "a shadow map"; }
 
+  /**
+   * What the stage's code depends on besides each mapper's own sources, as
+   * `key`: while it stays the same, the mappers keep the programs they built
+   * through the stage instead of building them again at every draw (VTK's
+   * mappers rebuild their shaders whenever a render pass says its code
+   * changed). False, the default: the stage has no such key, and every draw
+   * rebuilds.
+   */
+  virtual bool GetCodeKey(std::string& key) const
+  {
+    (void)key;
+    return false;
+  }
+
   /// `vtkShadowViewToWorld`, the camera's view to world matrix, which the
   /// surface code (vtkShadowShaderSources::GetSurfaceCode()) reads.
   static void SetViewToWorld(vtkShaderProgram* program, vtkRenderer* renderer);

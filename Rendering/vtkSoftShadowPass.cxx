@@ -48,7 +48,7 @@ vtkSoftShadowPass::vtkSoftShadowPass()
 {
   this->SetDelegatePass(this->Scene->GetDefaultSteps());
   this->PrePassStage->SetLightSpace(false);
-  this->Drawer->GetHooks()->SetOwner(this); // names the technique in its errors
+  this->Drawer->SetOwner(this); // names the technique in its errors
 }
 
 //------------------------------------------------------------------------------
@@ -279,7 +279,7 @@ void vtkSoftShadowPass::RenderReceivers(const vtkRenderState* s, bool screenSpac
   {
     prePass = [this](const vtkRenderState* state) { this->RenderDepthPrePass(state); };
   }
-  vtkShadowShaderHooks* hooks = this->Drawer->GetHooks();
+  vtkShadowShaderHooks* hooks = this->Drawer->GetHooks(this->ReceiverStage.get());
   hooks->SetStage(this->ReceiverStage.get());
   hooks->Attach(s);
   this->NumberOfRenderedProps += this->Scene->Render(s, this->DelegatePass, prePass);
@@ -331,6 +331,8 @@ vtkShadowReceiverStage::Frame vtkSoftShadowPass::GetReceiverFrame()
   frame.PackedCubeMaps = this->DrawsPackedCubeMaps();
   frame.ShadowOnlyLight = this->ShadowOnlyLight;
   frame.Technique = this->GetClassName();
+  // GetReceiverShading() depends on the technique's properties.
+  frame.ShadingKey = std::to_string(this->GetMTime());
   return frame;
 }
 
@@ -483,7 +485,7 @@ void vtkSoftShadowPass::RenderDepthPrePass(const vtkRenderState* s)
   vtkOpenGLState::ScopedglDepthMask depthMask(state);
   state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   state->vtkglDepthMask(GL_TRUE);
-  vtkShadowShaderHooks* hooks = this->Drawer->GetHooks();
+  vtkShadowShaderHooks* hooks = this->Drawer->GetHooks(this->ReceiverStage.get());
   hooks->SetStage(this->PrePassStage.get());
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {

@@ -358,7 +358,16 @@ class vtkHooksProbePass : public vtkHardShadowPass
 public:
   static vtkHooksProbePass* New();
   vtkTypeMacro(vtkHooksProbePass, vtkHardShadowPass);
-  vtkShadowShaderHooks* GetHooks() { return this->Drawer->GetHooks(); }
+  /// The most references any stage's hooks hold.
+  int GetHooksReferences()
+  {
+    int most = 0;
+    for (const auto& hooks : this->Drawer->GetAllHooks())
+    {
+      most = std::max(most, hooks.second->GetReferenceCount());
+    }
+    return most;
+  }
 };
 vtkStandardNewMacro(vtkHooksProbePass);
 
@@ -444,7 +453,7 @@ int HooksReferencesAfterScene()
     window->Render();
     window->Render();
   }
-  return pass->GetHooks()->GetReferenceCount();
+  return pass->GetHooksReferences();
 }
 
 // Warnings the framework prints, caught by message.

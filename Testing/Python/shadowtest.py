@@ -503,23 +503,32 @@ def add_ground_and_ball(renderer, ball_resolution=None, casters=()):
         add(data)
 
 
+def spot_light(x=0.0, radius=0.3):
+    """A spot light at (x, 5, 0) aimed at the origin, 45 degrees, of `radius`."""
+    from vtkmodules.vtkRenderingCore import vtkLight
+    from vtksoftshadows import vtkSoftShadowPass
+
+    light = vtkLight()
+    light.SetLightTypeToSceneLight()
+    light.SetPositional(True)
+    light.SetPosition(x, 5, 0)
+    light.SetFocalPoint(0, 0, 0)
+    light.SetConeAngle(45)
+    vtkSoftShadowPass.SetRadius(radius, light)
+    return light
+
+
 def api_ball(pass_class, light_radius=0.3, light_x=0.0, ball_resolution=None, casters=()):
     """The ball over the ground through the Python API, drawn shadow-only by
     a `pass_class` pass into a 200 x 150 off-screen window, under a spot
     light at (light_x, 5, 0); `casters`: more polydata among the casters.
     Returns (window, light, pass)."""
-    from vtkmodules.vtkRenderingCore import vtkLight, vtkRenderWindow, vtkRenderer
+    from vtkmodules.vtkRenderingCore import vtkRenderWindow, vtkRenderer
     import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (OpenGL factory)
 
     renderer = vtkRenderer()
     add_ground_and_ball(renderer, ball_resolution, casters)
-    light = vtkLight()
-    light.SetLightTypeToSceneLight()
-    light.SetPositional(True)
-    light.SetPosition(light_x, 5, 0)
-    light.SetFocalPoint(0, 0, 0)
-    light.SetConeAngle(45)
-    pass_class.SetRadius(light_radius, light)
+    light = spot_light(light_x, light_radius)
     renderer.AddLight(light)
     camera = renderer.GetActiveCamera()
     camera.SetPosition(0, 6, 6)
