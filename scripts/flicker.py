@@ -32,19 +32,9 @@ import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOImage import vtkPNGReader
 
+from scale import isosurface_scene  # the scale benchmark's dense isosurface
+
 QUALITY = sorted(glob.glob("Examples/Scenes/quality/*.json"))
-
-
-def gyroid_scene(resolution):
-    """The scale benchmark's isosurface (scripts/scale.py), about
-    30 * resolution^2 triangles, its tunnels shadowing each other."""
-    return {"name": "gyroid",
-            "camera": {"position": [2.4, 2.8, 3.4], "focal_point": [0.0, 0.7, 0.0]},
-            "lights": [{"type": "spot", "position": [2.5, 5.0, 1.5], "focal_point": [0, 0, 0],
-                        "cone_angle": 40, "radius": 0.15}],
-            "actors": [{"source": "plane", "params": {"size": 5}},
-                       {"source": "gyroid", "params": {"radius": 1.0, "resolution": resolution},
-                        "position": [0.0, 1.1, 0.0], "color": [0.85, 0.55, 0.3]}]}
 
 
 def turned(scene, angle):
@@ -134,7 +124,7 @@ def main():
     techniques = args.techniques.split(",")
     for name in args.scenes.split(","):
         if name == "gyroid":
-            scene = gyroid_scene(args.gyroid_resolution)
+            scene = isosurface_scene(args.gyroid_resolution)
         else:
             with open("Examples/Scenes/quality/%s.json" % name) as f:
                 scene = json.load(f)
