@@ -101,7 +101,9 @@ void vtkShadowReceiverStage::PostReplace(vtkShadowShaderSources& sources)
       [](const vtkShadowMapManager::Light& l) { return l.Point; });
     dec << "#define VTK_SHADOW_LIGHTS " << count << "\n"
         << "#define VTK_SHADOW_MAPS " << count - cubes << "\n"
-        << "#define VTK_SHADOW_CUBES " << cubes << "\n";
+        << "#define VTK_SHADOW_CUBES " << cubes << "\n"
+        << "#define VTK_SHADOW_PCF_RADIUS " << frame.PCFRadius << "\n"
+        << "#define VTK_SHADOW_PCF_BILINEAR " << (frame.PCFBilinear ? 1 : 0) << "\n";
     if (frame.Screen)
     {
       dec << "#define VTK_SHADOW_SCREEN_SPACE\n";
@@ -182,7 +184,7 @@ bool vtkShadowReceiverStage::GetCodeKey(std::string& key) const
   std::ostringstream k;
   k << (frame.Screen ? 1 : 0) << ' ' << frame.TextureUnits << ' ' << frame.TexturesPerFrame << ' '
     << frame.TexturesPerLight << ' ' << frame.ShadowOnlyLight << ' ' << frame.Technique << ' '
-    << frame.ShadingKey << '\n';
+    << frame.ShadingKey << ' ' << frame.PCFRadius << ' ' << frame.PCFBilinear << '\n';
   for (const std::string& extension : frame.Extensions)
   {
     k << extension << ' ';
@@ -225,8 +227,6 @@ void vtkShadowReceiverStage::SetUniforms(vtkShaderProgram* program, vtkProp* pro
   }
   SetViewToWorld(program, frame.Maps->GetRenderer());
   program->SetUniformf("vtkShadowMapTexel", 1.0f / static_cast<float>(frame.MapSize));
-  program->SetUniformi("vtkShadowPCFRadius", frame.PCFRadius);
-  program->SetUniformi("vtkShadowPCFBilinear", frame.PCFBilinear ? 1 : 0);
   vtkShadowMapManager::SetLookupUniforms(
     program, "vtkShadow", frame.MapSize, frame.NormalBias, frame.DistanceBias);
 

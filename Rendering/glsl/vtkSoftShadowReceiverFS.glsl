@@ -3,9 +3,11 @@
 // Shadow term of the receivers' fragment shaders, shared by every technique.
 // Inserted by vtkSoftShadowPass after VTK_SHADOW_LIGHTS (number of shadowed
 // lights), VTK_SHADOW_MAPS and VTK_SHADOW_CUBES (how many of them have a 2D
-// map, a cube map) and, for screen-space techniques, VTK_SHADOW_SCREEN_SPACE
-// are defined. Sampler arrays are indexed with constants (GLSL 1.50), but
-// for vtkShadowCubeLookupAll(), which needs GL_ARB_gpu_shader5.
+// map, a cube map), VTK_SHADOW_PCF_RADIUS and VTK_SHADOW_PCF_BILINEAR (the
+// hard lookup's kernel) and, for screen-space techniques,
+// VTK_SHADOW_SCREEN_SPACE are defined. Sampler arrays are indexed with
+// constants (GLSL 1.50), but for vtkShadowCubeLookupAll(), which needs
+// GL_ARB_gpu_shader5.
 // Uses: vtkShadowSurfaceFS.glsl, vtkShadowNormalOffsetFS.glsl, vtkShadowCubeLookupFS.glsl.
 
 uniform mat4 vtkShadowWorldToMap[VTK_SHADOW_LIGHTS];
@@ -15,7 +17,11 @@ uniform vec3 vtkShadowAxis[VTK_SHADOW_LIGHTS];
 uniform vec2 vtkShadowFootprint[VTK_SHADOW_LIGHTS];
 uniform float vtkShadowMapTexel;
 uniform float vtkShadowNormalBias;
-uniform int vtkShadowPCFRadius;
+// Constants, not uniforms: llvmpipe runs a loop's body once with every lane
+// masked off even when it has no iteration to do, so a PCF loop the
+// compiler cannot remove cost `hard` 10% of its frame at radius 0.
+const int vtkShadowPCFRadius = VTK_SHADOW_PCF_RADIUS;
+const bool vtkShadowPCFBilinear = VTK_SHADOW_PCF_BILINEAR != 0;
 
 // The point light `i`'s map is looked up at (see vtkShadowNormalOffset).
 vec4 vtkShadowReceiver(int i, vec4 positionWC, vec3 normalWC)
@@ -29,7 +35,6 @@ vec4 vtkShadowReceiver(int i, vec4 positionWC, vec3 normalWC)
 // With bilinear comparison (vtkShadowPCFBilinear) the taps sit on texel
 // corners, (2r)^2 of them, each averaging 2x2 texels: the same footprint
 // with tent weights for fewer taps. Outside the map is lit.
-uniform bool vtkShadowPCFBilinear;
 #if VTK_SHADOW_MAPS > 0
 uniform sampler2DShadow vtkShadowMap[VTK_SHADOW_MAPS];
 #endif
