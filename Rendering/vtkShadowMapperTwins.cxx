@@ -26,13 +26,13 @@ vtkMapper* TwinnableMapper(vtkProp* prop)
   {
     return nullptr;
   }
+  // A polydata mapper, or PyVista's vtkDataSetMapper, which draws polydata
+  // as a polydata mapper would; small meshes only.
   vtkMapper* mapper = actor->GetMapper();
-  const bool polyData =
-    mapper && std::strcmp(mapper->GetClassName(), "vtkOpenGLPolyDataMapper") == 0;
-  // PyVista's mapper; of polydata, it draws it as a polydata mapper would.
-  const bool dataSet = mapper && std::strcmp(mapper->GetClassName(), "vtkDataSetMapper") == 0 &&
-    vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0));
-  if (!polyData && !dataSet)
+  auto* input = mapper ? vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0)) : nullptr;
+  if (!input || input->GetNumberOfPoints() > vtkShadowMapperTwins::GetMaximumPoints() ||
+    (std::strcmp(mapper->GetClassName(), "vtkOpenGLPolyDataMapper") != 0 &&
+      std::strcmp(mapper->GetClassName(), "vtkDataSetMapper") != 0))
   {
     return nullptr;
   }
@@ -41,11 +41,6 @@ vtkMapper* TwinnableMapper(vtkProp* prop)
   if (shaders->HasVertexShaderCode() || shaders->HasFragmentShaderCode() ||
     shaders->HasGeometryShaderCode() ||
     (replacing && !replacing->GetAllShaderReplacements().empty()))
-  {
-    return nullptr;
-  }
-  auto* input = vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0));
-  if (!input || input->GetNumberOfPoints() > vtkShadowMapperTwins::GetMaximumPoints())
   {
     return nullptr;
   }

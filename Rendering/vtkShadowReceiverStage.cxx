@@ -133,9 +133,7 @@ void vtkShadowReceiverStage::PostReplace(vtkShadowShaderSources& sources)
     {
       const int n = lights[slot].ShaderIndex;
       const int i = static_cast<int>(slot);
-      const auto& visibility =
-        frame.Code.Visibility ? frame.Code.Visibility : frame.DefaultVisibility;
-      impl << "  float vtkShadowVisibility" << n << " = " << visibility(i) << ";\n"
+      impl << "  float vtkShadowVisibility" << n << " = " << frame.Visibility(i) << ";\n"
            << "  float vtkShadowFactor" << n << " = mix(1.0, vtkShadowVisibility" << n
            << ", vtkShadowAttenuation[" << i << "]);\n";
       if (!vtkShadowMapperCode::ScaleLight(fragmentShader, n, "vtkShadowFactor" + std::to_string(n),
@@ -199,10 +197,9 @@ bool vtkShadowReceiverStage::GetCodeKey(std::string& key) const
   {
     k << texture.Sampler << ' ' << texture.Name << ';';
   }
-  const auto& visibility = frame.Code.Visibility ? frame.Code.Visibility : frame.DefaultVisibility;
   for (size_t slot = 0; slot < lights.size(); ++slot)
   {
-    k << '\n' << visibility(static_cast<int>(slot));
+    k << '\n' << frame.Visibility(static_cast<int>(slot));
   }
   key = k.str();
   return true;

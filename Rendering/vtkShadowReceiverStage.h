@@ -105,6 +105,12 @@ public:
     /// What Shading() depends on besides the lights (e.g. the technique's
     /// modification time): part of the stage's code key.
     std::string ShadingKey;
+
+    /// Light `slot`'s visibility expression: the technique's, else the framework's.
+    std::string Visibility(int slot) const
+    {
+      return this->Code.Visibility ? this->Code.Visibility(slot) : this->DefaultVisibility(slot);
+    }
   };
 
   void SetFrame(Frame frame) { this->Current = std::move(frame); }
