@@ -24,14 +24,12 @@ import glob
 import json
 import math
 import os
-import subprocess
 import sys
 import tempfile
 
 import numpy as np
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOImage import vtkPNGReader
 
+from common import read_png, run
 from scale import isosurface_scene  # the scale benchmark's dense isosurface
 
 QUALITY = sorted(glob.glob("Examples/Scenes/quality/*.json"))
@@ -51,22 +49,6 @@ def turned(scene, angle):
     if "direction" in light:
         light["direction"] = (rotation @ np.array(light["direction"], float)).tolist()
     return scene
-
-
-def read_png(path):
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    image = reader.GetOutput()
-    w, h, _ = image.GetDimensions()
-    scalars = image.GetPointData().GetScalars()
-    return vtk_to_numpy(scalars).reshape(h, w, scalars.GetNumberOfComponents())
-
-
-def run(program, *args):
-    result = subprocess.run([program] + list(args), capture_output=True, text=True)
-    if result.returncode != 0:
-        sys.exit("softshadows %s failed:\n%s%s" % (" ".join(args), result.stdout, result.stderr))
 
 
 def frames(program, scene, techniques, count, step, size, samples):

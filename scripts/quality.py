@@ -11,24 +11,18 @@ docs/quality/rmse-vs-time.png. Run by scripts/quality.sh.
 import glob
 import json
 import os
-import subprocess
 import sys
 import tempfile
 
 import numpy as np
+
+from common import run
 
 TECHNIQUES = ["hard", "reference", "reference:sphere", "contact", "contact:gaussian",
               "contact:multipass", "omni", "silhouette", "smoothies", "aliasfree"]
 SCENES = sorted(glob.glob("Examples/Scenes/quality/*.json"))
 DOC = "docs/quality.md"
 BEGIN, END = "<!-- quality table: scripts/quality.sh -->", "<!-- end of quality table -->"
-
-
-def run(program, *args):
-    result = subprocess.run([program] + list(args), capture_output=True, text=True)
-    if result.returncode != 0:
-        sys.exit("softshadows %s failed:\n%s%s" % (" ".join(args), result.stdout, result.stderr))
-    return result.stdout
 
 
 def json_lines(text):
@@ -145,4 +139,5 @@ def main():
     pictures(program, figures)
 
 
-main()
+if __name__ == "__main__":
+    main()
