@@ -1,14 +1,19 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
 # SPDX-License-Identifier: BSD-3-Clause
 """What the measuring scripts share: running the `softshadows` program and
-reading the pictures it writes. Run as `python3 scripts/NAME.py`, they find
-this module beside them."""
+reading the pictures it writes (with the tests' reader, Testing/Python/
+shadowtest.py). Run as `python3 scripts/NAME.py`, they find this module
+beside them."""
 
+import os
 import subprocess
 import sys
 
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOImage import vtkPNGReader
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Testing",
+                                "Python"))
+from shadowtest import read_png  # noqa: E402  (bottom row first, as the tests read)
+
+__all__ = ["read_png", "run"]
 
 
 def run(program, *args):
@@ -18,14 +23,3 @@ def run(program, *args):
     if result.returncode != 0:
         sys.exit("softshadows %s failed:\n%s%s" % (" ".join(args), result.stdout, result.stderr))
     return result.stdout
-
-
-def read_png(path):
-    """An array [rows, columns, components], bottom row first."""
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    image = reader.GetOutput()
-    width, height, _ = image.GetDimensions()
-    scalars = image.GetPointData().GetScalars()
-    return vtk_to_numpy(scalars).reshape(height, width, scalars.GetNumberOfComponents())
