@@ -328,20 +328,44 @@ bool vtkShadowGeometry::Draw(vtkOpenGLRenderWindow* context, const glm::dmat4& w
     uniforms(program);
   }
   this->VAO->Bind();
-  switch (this->Kind)
+  // In batches, each waited for once the next is queued: a software
+  // rasterizer otherwise queues every batch's binned primitives at once.
+  const int batch = this->BatchSize > 0 && this->Kind != Primitive::TriangleInstances
+    ? this->BatchSize
+    : this->Primitives;
+  GLsync before = nullptr;
+  for (int first = 0; first < this->Primitives; first += batch)
   {
-    case Primitive::Triangles:
-      glDrawArrays(GL_TRIANGLES, 0, 3 * this->Primitives);
-      break;
-    case Primitive::TriangleInstances:
-      glDrawArraysInstanced(GL_TRIANGLES, 0, 3, this->Primitives);
-      break;
-    case Primitive::TrianglePoints:
-      glDrawArrays(GL_POINTS, 0, this->Primitives);
-      break;
-    case Primitive::LinesAdjacency:
-      glDrawArrays(GL_LINES_ADJACENCY, 0, 4 * this->Primitives);
-      break;
+    const int count = std::min(batch, this->Primitives - first);
+    switch (this->Kind)
+    {
+      case Primitive::Triangles:
+        glDrawArrays(GL_TRIANGLES, 3 * first, 3 * count);
+        break;
+      case Primitive::TriangleInstances:
+        glDrawArraysInstanced(GL_TRIANGLES, 0, 3, count);
+        break;
+      case Primitive::TrianglePoints:
+        glDrawArrays(GL_POINTS, first, count);
+        break;
+      case Primitive::LinesAdjacency:
+        glDrawArrays(GL_LINES_ADJACENCY, 4 * first, 4 * count);
+        break;
+    }
+    if (count < this->Primitives)
+    {
+      GLsync queued = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+      if (before)
+      {
+        glClientWaitSync(before, GL_SYNC_FLUSH_COMMANDS_BIT, GLuint64(10) * 1000000000);
+        glDeleteSync(before);
+      }
+      before = queued;
+    }
+  }
+  if (before)
+  {
+    glDeleteSync(before);
   }
   this->VAO->Release();
   return true;

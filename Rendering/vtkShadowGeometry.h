@@ -75,6 +75,12 @@ public:
   void SetPrimitive(Primitive primitive);
   /// Unsigned short arrays hold binary16 bits, read as GL_HALF_FLOAT. Default off.
   void SetHalfFloat(bool half);
+  /// Primitives a draw call: larger inputs are drawn in batches, each
+  /// finished before the one after the next starts, so that a software
+  /// rasterizer (llvmpipe) holds at most two batches' binned primitives.
+  /// For geometry shaders that emit large regions; not for
+  /// TriangleInstances. Default 0: one draw.
+  void SetBatchSize(int primitives) { this->BatchSize = primitives; }
   void SetShaders(const std::string& vertex, const std::string& fragment,
     const std::string& geometry = std::string());
   /// `source` (a shader beginning with //VTK::System::Dec) with `prefix`
@@ -140,6 +146,7 @@ private:
   vtkSmartPointer<vtkPolyData> Input;
   Primitive Kind = Primitive::Triangles;
   bool HalfFloat = false;
+  int BatchSize = 0;
   vtkMTimeType UploadTime = 0;
   std::vector<Attribute> Attributes;
   int Primitives = 0; ///< triangles or lines drawn

@@ -56,6 +56,11 @@
 
 namespace
 {
+// Caster triangles (or edges) a draw call: each covers its influence region,
+// up to 20 triangles of it, which llvmpipe bins before it rasterizes them;
+// in batches, it holds two batches' worth instead of a million triangles'.
+constexpr int CasterBatch = 16384;
+
 // Lookup table cells (vtkAliasFreeLookup.glsl): normals, times distances.
 constexpr int LookupAngles = 64 * 64;
 constexpr int LookupDistances = 64;
@@ -171,6 +176,7 @@ void BuildTriangles(vtkPolyData* data, CasterTriangles& value)
   bool closed = false;
   value.Edges = vtkShadowGeometry::NewShared();
   value.Edges->SetPrimitive(vtkShadowGeometry::Primitive::LinesAdjacency);
+  value.Edges->SetBatchSize(CasterBatch);
   value.Edges->SetInput(EdgesWithFaces(adjacency->GetOutput(), closed));
 
   // Divergence theorem: the signed volume of the tetrahedra to the origin
@@ -194,6 +200,7 @@ void BuildTriangles(vtkPolyData* data, CasterTriangles& value)
   value.Closed = closed && volume != 0.0;
   value.Orientation = volume < 0.0 ? -1.0f : 1.0f;
   value.Geometry = vtkShadowGeometry::NewShared();
+  value.Geometry->SetBatchSize(CasterBatch);
   value.Geometry->SetInput(mesh);
 }
 
