@@ -77,8 +77,22 @@ enum Binding : unsigned int
   Samples = 4,
   Hidden = 5,
   Lookup = 6,
-  Stats = 7
+  Depths = 6, ///< while the lists are built (no lookup table then)
+  Stats = 7,
+  CasterDepths = 7 ///< while the casters draw (no statistics then)
 };
+
+// Cells of the pyramid of greatest sample depths over a size^2 map: the
+// texels, then 2x2 texels, and so on to one cell.
+size_t DepthPyramidCells(int size)
+{
+  size_t cells = 0;
+  for (; size > 1; size = (size + 1) / 2)
+  {
+    cells += static_cast<size_t>(size) * size;
+  }
+  return cells + 1;
+}
 
 // Stats: clip-space bounds (order-preserving integers), depth, longest list,
 // number of samples.
@@ -229,10 +243,10 @@ struct vtkAliasFreeShadowPass::Internals
 {
   vtkShadowCasterCache<CasterTriangles> Casters;
   vtkAliasFreeBentNormals Bent; // receivers' bent normals (section 6), when on
-  vtkShadowCompute::Program Bounds, Count, ScanBlocks, ScanTop, ScanAdd, Scatter, Resolve,
-    BuildLookup;
+  vtkShadowCompute::Program Bounds, Count, DepthLevel, DepthMarked, ScanBlocks, ScanTop, ScanAdd,
+    Scatter, Resolve, BuildLookup;
   vtkShadowCompute::Buffer CountsBuffer, OffsetsBuffer, BlocksBuffer, PixelsBuffer, SamplesBuffer,
-    HiddenBuffer, StatsBuffer, LightSamples, MarksBuffer, CentreBuffer;
+    HiddenBuffer, StatsBuffer, LightSamples, MarksBuffer, CentreBuffer, DepthsBuffer;
   std::vector<std::unique_ptr<LookupTable>> Lookups; // per light slot
   // Temporal jitter: per light slot, what the last frame saw and how many
   // frames its accumulated visibility holds.
@@ -264,6 +278,8 @@ struct vtkAliasFreeShadowPass::Internals
     const std::tuple<vtkShadowCompute::Program*, std::string, std::string> programs[] = {
       { &this->Bounds, "ALIASFREE_BOUNDS", vtkAliasFreeListsCS },
       { &this->Count, "ALIASFREE_COUNT", vtkAliasFreeListsCS },
+      { &this->DepthLevel, "ALIASFREE_DEPTH_LEVEL", vtkAliasFreeListsCS },
+      { &this->DepthMarked, "ALIASFREE_DEPTH_MARKED", vtkAliasFreeListsCS },
       { &this->ScanBlocks, "ALIASFREE_SCAN_BLOCKS", vtkAliasFreeListsCS },
       { &this->ScanTop, "ALIASFREE_SCAN_TOP", vtkAliasFreeListsCS },
       { &this->ScanAdd, "ALIASFREE_SCAN_ADD", vtkAliasFreeListsCS },
@@ -401,10 +417,11 @@ bool vtkAliasFreeShadowPass::RenderScreenSpace(const vtkRenderState* s)
 
   // Memory, before anything is allocated: the camera pass's two targets,
   // per pixel its entry and (at most) its sample, hidden bit and mask, per
-  // texel its count, offset and mark (and the draw's target), the lookup
-  // tables.
+  // texel its count, offset and mark (and the draw's target), the depth
+  // pyramid, the lookup tables.
+  const size_t depthCells = DepthPyramidCells(this->MapSize);
   double bytes = pixels * (2 * 16 + 8 + 16 + 0.125 + 4.0 * words) + texels * (4 + 4 + 4 + 1) +
-    (texels / 1024 + 1) * 4.0;
+    (texels / 1024 + 1) * 4.0 + depthCells * 4.0;
   for (const auto& light : lights)
   {
     if (soft && light.Radius > 0.0)
@@ -447,6 +464,7 @@ bool vtkAliasFreeShadowPass::RenderScreenSpace(const vtkRenderState* s)
   Internals::Grow(in.CountsBuffer, texels * 4);
   Internals::Grow(in.OffsetsBuffer, texels * 4);
   Internals::Grow(in.BlocksBuffer, (texels / 1024 + 1) * 4);
+  Internals::Grow(in.DepthsBuffer, depthCells * 4);
   Internals::Grow(in.PixelsBuffer, pixels * 8);
   Internals::Grow(in.SamplesBuffer, pixels * 16);
   in.Lookups.resize(lights.size());
@@ -710,9 +728,15 @@ void vtkAliasFreeShadowPass::BuildLists(FrustumPass& pass)
   in.StatsBuffer.Allocate(sizeof initial, initial);
   in.StatsBuffer.BindStorage(Stats);
   in.CountsBuffer.Clear(0);
+  in.DepthsBuffer.Clear(0x80000000u); // below every depth: no sample
+  in.DepthsBuffer.BindStorage(Depths);
   pass.Use(in.Count, worldToClip);
   in.Count.Dispatch(pass.GroupsX, pass.GroupsY);
   vtkShadowCompute::Barrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  if (pass.Soft)
+  {
+    this->BuildDepthLevels(pass);
+  }
   int stats[8];
   in.StatsBuffer.Read(stats, sizeof stats);
   pass.Samples = static_cast<unsigned int>(stats[6]);
@@ -733,6 +757,27 @@ void vtkAliasFreeShadowPass::BuildLists(FrustumPass& pass)
   pass.Use(in.Scatter, worldToClip);
   in.Scatter.Dispatch(pass.GroupsX, pass.GroupsY);
   vtkShadowCompute::Barrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+//------------------------------------------------------------------------------
+void vtkAliasFreeShadowPass::BuildDepthLevels(FrustumPass& pass)
+{
+  // The pyramid of greatest depths over the texels' own, for culling
+  // influence regions (vtkAliasFreeCastersGS.glsl).
+  Internals& in = *this->Internal;
+  in.DepthsBuffer.BindStorage(Depths);
+  int from[3] = { 0, this->MapSize, this->MapSize };
+  while (from[1] > 1)
+  {
+    const int size = (from[1] + 1) / 2;
+    const int to[3] = { from[0] + from[1] * from[1], size, size };
+    in.DepthLevel.Use(pass.Context);
+    in.DepthLevel.SetUniform3i("aliasfreeLevelFrom", from);
+    in.DepthLevel.SetUniform3i("aliasfreeLevelTo", to);
+    in.DepthLevel.Dispatch((size + 7) / 8, (size + 7) / 8);
+    vtkShadowCompute::Barrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    std::copy(to, to + 3, from);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -975,7 +1020,6 @@ bool vtkAliasFreeShadowPass::TestCasters(FrustumPass& pass)
             program->SetUniformMatrix3x3(
               "aliasfreeToLight", const_cast<float*>(glm::value_ptr(toLight)));
             program->SetUniformi("aliasfreeWords", words);
-            program->SetUniformi("aliasfreeRestrict", restrict ? 1 : 0);
           }
         });
     }
@@ -991,6 +1035,7 @@ bool vtkAliasFreeShadowPass::TestCasters(FrustumPass& pass)
   };
   Internals::Grow(in.MarksBuffer, static_cast<size_t>(pass.Texels) * 4);
   in.MarksBuffer.BindStorage(Marks);
+  in.DepthsBuffer.BindStorage(CasterDepths);
   if (restrict)
   {
     in.MarksBuffer.Clear(0);
@@ -1001,6 +1046,15 @@ bool vtkAliasFreeShadowPass::TestCasters(FrustumPass& pass)
     {
       return false;
     }
+    // The soft pass tests the marked texels only: the others leave its
+    // pyramid, so that regions over none of them are culled whole.
+    in.DepthsBuffer.BindStorage(Depths);
+    pass.Use(in.DepthMarked, pass.WorldToClip);
+    in.DepthMarked.Dispatch((mapSize + 7) / 8, (mapSize + 7) / 8);
+    vtkShadowCompute::Barrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    this->BuildDepthLevels(pass);
+    in.DepthsBuffer.BindStorage(CasterDepths);
+    in.Lookups[pass.Slot]->Masks.BindStorage(Lookup); // the pyramid's stages took its binding
     in.HiddenBuffer.BindStorage(Hidden);
   }
   if (!draw(soft ? Kind::Soft : Kind::Hard))
@@ -1100,14 +1154,14 @@ void vtkAliasFreeShadowPass::ReleaseGraphicsResources(vtkWindow* w)
   Internals& in = *this->Internal;
   in.Casters.Clear();
   in.Bent.ReleaseGraphicsResources(w);
-  for (auto* program : { &in.Bounds, &in.Count, &in.ScanBlocks, &in.ScanTop, &in.ScanAdd,
-         &in.Scatter, &in.Resolve, &in.BuildLookup })
+  for (auto* program : { &in.Bounds, &in.Count, &in.DepthLevel, &in.DepthMarked, &in.ScanBlocks,
+         &in.ScanTop, &in.ScanAdd, &in.Scatter, &in.Resolve, &in.BuildLookup })
   {
     program->Release();
   }
-  for (auto* buffer :
-    { &in.CountsBuffer, &in.OffsetsBuffer, &in.BlocksBuffer, &in.PixelsBuffer, &in.SamplesBuffer,
-      &in.HiddenBuffer, &in.StatsBuffer, &in.LightSamples, &in.MarksBuffer, &in.CentreBuffer })
+  for (auto* buffer : { &in.CountsBuffer, &in.OffsetsBuffer, &in.BlocksBuffer, &in.PixelsBuffer,
+         &in.SamplesBuffer, &in.HiddenBuffer, &in.StatsBuffer, &in.LightSamples, &in.MarksBuffer,
+         &in.CentreBuffer, &in.DepthsBuffer })
   {
     buffer->Release();
   }

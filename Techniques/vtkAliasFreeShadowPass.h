@@ -252,6 +252,7 @@ private:
     const vtkRenderState* s, int slot, const vtkShadowFrustum& view, bool first, FrustumPass& pass);
   bool FitFrustumToViewSamples(FrustumPass& pass);
   void BuildLists(FrustumPass& pass);
+  void BuildDepthLevels(FrustumPass& pass);
   void PrepareLightSamples(FrustumPass& pass);
   bool TestCasters(FrustumPass& pass);
   void Resolve(FrustumPass& pass);

@@ -11,7 +11,10 @@
 //   table (vtkAliasFreeLookup.glsl), the four are ANDed and ORed into p's
 //   mask.
 // With ALIASFREE_EDGES it only marks the texels of silhouette edges'
-// influence regions (vtkAliasFreeCastersGS.glsl) that hold samples.
+// influence regions (vtkAliasFreeCastersGS.glsl) that hold samples. Both
+// skip texels whose samples all lie nearer the light than the triangle;
+// soft, restricted to silhouettes, the texels no edge marked too (their
+// samples take the centre's hard shadow).
 // Closed casters hide a sample only from their outer side (hard: only their
 // light-back-facing triangles are drawn); open ones from both. No triangle
 // hides a sample within aliasfreeEpsilon of its plane (relative to the
@@ -25,10 +28,17 @@ layout(std430, binding = 4) readonly buffer aliasfreeSamplesBuffer { vec4 aliasf
 layout(std430, binding = 5) coherent buffer aliasfreeHiddenBuffer { uint aliasfreeHidden[]; };
 
 uniform int aliasfreeMapTexels; // texels a side
-// Texels in the influence region of a silhouette edge (ALIASFREE_EDGES
-// writes them; soft tests only there when aliasfreeRestrict is 1).
+#ifdef ALIASFREE_EDGES
+// Texels in the influence region of a silhouette edge, which it marks.
 layout(std430, binding = 2) buffer aliasfreeMarksBuffer { uint aliasfreeMarks[]; };
-uniform int aliasfreeRestrict;
+#endif
+#if defined(ALIASFREE_SOFT) || defined(ALIASFREE_EDGES)
+// The texels' greatest view sample depths (order-preserving integers; soft,
+// restricted to silhouettes: of the marked texels only, the others read as
+// empty), and the depth beyond which this triangle may hide a sample.
+layout(std430, binding = 7) readonly buffer aliasfreeDepthsBuffer { int aliasfreeDepths[]; };
+flat in float aliasfreeNearest;
+#endif
 uniform int aliasfreeClosed;
 uniform float aliasfreeOrientation;
 uniform float aliasfreeEpsilon;
@@ -64,6 +74,13 @@ void main()
 {
   ivec2 texel = ivec2(gl_FragCoord.xy);
   uint index = uint(texel.y * aliasfreeMapTexels + texel.x);
+#if defined(ALIASFREE_SOFT) || defined(ALIASFREE_EDGES)
+  int nearest = floatBitsToInt(aliasfreeNearest);
+  if (aliasfreeDepths[index] < (nearest >= 0 ? nearest : nearest ^ 0x7fffffff))
+  {
+    return; // no sample here, or every one nearer the light than the triangle
+  }
+#endif
   uint count = aliasfreeCounts[index];
   if (count == 0u)
   {
@@ -72,12 +89,6 @@ void main()
 #ifdef ALIASFREE_EDGES
   aliasfreeMarks[index] = 1u;
   return;
-#endif
-#ifdef ALIASFREE_SOFT
-  if (aliasfreeRestrict == 1 && aliasfreeMarks[index] == 0u)
-  {
-    return; // no penumbra here: the centre's hard shadow holds
-  }
 #endif
   uint first = aliasfreeOffsets[index];
 #ifdef ALIASFREE_SOFT

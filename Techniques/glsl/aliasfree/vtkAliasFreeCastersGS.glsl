@@ -13,6 +13,10 @@
 // borders and other odd edges always) covers its influence region, where
 // the penumbrae lie: the texels outside every such region take the hard
 // shadow of the light's centre.
+// Both cull with the view samples' depths, read from a pyramid of their
+// greatest depths: a triangle hides no sample nearer the light than itself,
+// so its region is drawn only as deep as the deepest sample under it, and
+// not at all when none lies beyond it.
 // Uses: vtkAliasFreeCastersVS.glsl (its output), vtkAliasFreeCastersFS.glsl.
 
 #ifdef ALIASFREE_EDGES
@@ -44,6 +48,11 @@ uniform vec3 aliasfreeAxis;
 uniform vec3 aliasfreeSide0;    // two unit vectors across the axis
 uniform vec3 aliasfreeSide1;
 uniform float aliasfreeFar;     // depth of the farthest view sample
+// The pyramid of the view samples' greatest depths, order-preserving
+// integers (vtkAliasFreeListsCS.glsl): texels, then 2x2 texels, and so on.
+layout(std430, binding = 7) readonly buffer aliasfreeDepthsBuffer { int aliasfreeDepths[]; };
+flat out float aliasfreeNearest; // the depth beyond which a sample may be hidden
+float aliasfreeNearestDepth = 0.0;
 #endif
 
 #ifdef ALIASFREE_SOFT
@@ -59,6 +68,7 @@ flat out vec4 aliasfreeEdge2;
 
 const float aliasfreePiOver6 = 0.52359877559830;
 const int aliasfreeMaxPoints = 18;
+const int aliasfreeDepthPasses = 2; // lookups of the depth pyramid a region (a third gains little)
 vec2 aliasfreeRegion[aliasfreeMaxPoints];
 int aliasfreeRegionSize = 0;
 
@@ -68,6 +78,9 @@ void aliasfreeEmitVertex(vec2 ndc)
   aliasfreeA = aliasfreeWorldIn[0];
   aliasfreeB = aliasfreeWorldIn[1];
   aliasfreeC = aliasfreeWorldIn[2];
+#endif
+#if defined(ALIASFREE_SOFT) || defined(ALIASFREE_EDGES)
+  aliasfreeNearest = aliasfreeNearestDepth;
 #endif
   gl_Position = vec4(ndc, 0.0, 1.0);
   EmitVertex();
@@ -170,26 +183,19 @@ void aliasfreeHull(vec2 points[aliasfreeMaxPoints], int count)
 }
 
 #if defined(ALIASFREE_SOFT) || defined(ALIASFREE_EDGES)
-// The influence region of the first n input vertices into aliasfreeRegion:
-// 1 if bounded, 0 if empty, -1 if unbounded (the whole map).
-int aliasfreeInfluence(int n)
+// The points whose convex hull is the influence region of the first n
+// input vertices drawn to depth `far`, into aliasfreePoints: their number,
+// or -1 if the region is unbounded (the whole map).
+vec2 aliasfreePoints[aliasfreeMaxPoints];
+int aliasfreeProject(int n, float far)
 {
   // Section 4.1: from each vertex v, the light's silhouette bounded by a
-  // hexagon and projected through v onto the far plane (the farthest view
-  // sample's depth, or farther for vertices beyond it).
-  float far = aliasfreeFar;
-  float farthest = -3.0e38;
+  // hexagon and projected through v onto the far plane (or farther for
+  // vertices beyond it).
   for (int i = 0; i < n; ++i)
   {
-    float depth = dot(aliasfreeWorldIn[i] - aliasfreeEye, aliasfreeAxis);
-    far = max(far, depth * 1.001);
-    farthest = max(farthest, depth);
+    far = max(far, dot(aliasfreeWorldIn[i] - aliasfreeEye, aliasfreeAxis) * 1.001);
   }
-  if (aliasfreeLight.w > 0.5 && farthest < -aliasfreeReach)
-  {
-    return 0; // wholly behind the light: between it and no view sample
-  }
-  vec2 points[aliasfreeMaxPoints];
   int count = 0;
   for (int i = 0; i < n; ++i)
   {
@@ -228,7 +234,7 @@ int aliasfreeInfluence(int n)
         {
           return -1;
         }
-        points[count++] = clip.xy / clip.w;
+        aliasfreePoints[count++] = clip.xy / clip.w;
       }
     }
     else
@@ -242,11 +248,119 @@ int aliasfreeInfluence(int n)
         float angle = float(k) * 2.0 * aliasfreePiOver6;
         vec3 x = centre + reach * (cos(angle) * aliasfreeSide0 + sin(angle) * aliasfreeSide1);
         vec4 clip = aliasfreeWorldToClip * vec4(x, 1.0);
-        points[count++] = clip.xy / clip.w;
+        aliasfreePoints[count++] = clip.xy / clip.w;
       }
     }
   }
-  aliasfreeHull(points, count);
+  return count;
+}
+
+int aliasfreeOrdered(float f)
+{
+  int i = floatBitsToInt(f);
+  return i >= 0 ? i : i ^ 0x7fffffff;
+}
+
+// The deepest view sample under the bounds of the first `count`
+// aliasfreePoints (grown by a texel), as an order-preserving integer (the
+// smallest integer where there is none): from the pyramid's finest level
+// that covers the bounds with 3x3 cells.
+int aliasfreeDeepestUnder(int count)
+{
+  vec2 lo = aliasfreePoints[0], hi = lo;
+  for (int i = 1; i < count; ++i)
+  {
+    lo = min(lo, aliasfreePoints[i]);
+    hi = max(hi, aliasfreePoints[i]);
+  }
+  const int none = -0x7fffffff - 1;
+  int size = int(aliasfreeMapSize);
+  vec2 toTexels = vec2(0.5 * aliasfreeMapSize);
+  ivec2 t0 = ivec2(floor((clamp(lo, -2.0, 2.0) + 1.0) * toTexels)) - 1;
+  ivec2 t1 = ivec2(floor((clamp(hi, -2.0, 2.0) + 1.0) * toTexels)) + 1;
+  if (any(lessThan(t1, ivec2(0))) || any(greaterThanEqual(t0, ivec2(size))))
+  {
+    return none; // wholly outside the map
+  }
+  t0 = max(t0, ivec2(0));
+  t1 = min(t1, ivec2(size - 1));
+  int first = 0;
+  while (max(t1.x - t0.x, t1.y - t0.y) > 2)
+  {
+    first += size * size;
+    size = (size + 1) / 2;
+    t0 /= 2;
+    t1 /= 2;
+  }
+  int deepest = none;
+  for (int y = t0.y; y <= t1.y; ++y)
+  {
+    for (int x = t0.x; x <= t1.x; ++x)
+    {
+      deepest = max(deepest, aliasfreeDepths[first + y * size + x]);
+    }
+  }
+  return deepest;
+}
+
+// The influence region of the first n input vertices into aliasfreeRegion:
+// 1 if bounded, 0 if empty, -1 if unbounded (the whole map). Drawn only as
+// deep as the deepest view sample under it, found by drawing it at the
+// farthest sample's depth, then again at the depth found under that, which
+// the shallower region's smaller bounds may lower again.
+int aliasfreeInfluence(int n)
+{
+  float nearest = 3.0e38, farthest = -3.0e38;
+  for (int i = 0; i < n; ++i)
+  {
+    float depth = dot(aliasfreeWorldIn[i] - aliasfreeEye, aliasfreeAxis);
+    nearest = min(nearest, depth);
+    farthest = max(farthest, depth);
+  }
+  if (aliasfreeLight.w > 0.5 && farthest < -aliasfreeReach)
+  {
+    return 0; // wholly behind the light: between it and no view sample
+  }
+  // A segment from a point of the light to a sample reaches no deeper than
+  // the deeper of the two: beyond the light, the triangle hides only
+  // samples deeper than its nearest point.
+  float lightDeepest = aliasfreeLight.w > 0.5
+    ? dot(aliasfreeLight.xyz - aliasfreeEye, aliasfreeAxis) + aliasfreeReach
+    : -3.0e38;
+  aliasfreeNearestDepth = nearest > lightDeepest ? nearest : -3.0e38;
+  int reachable = aliasfreeOrdered(aliasfreeNearestDepth);
+  float far = aliasfreeFar;
+  if (aliasfreeNearestDepth > far)
+  {
+    return 0;
+  }
+  int count = aliasfreeProject(n, far);
+  for (int pass = 0; pass < aliasfreeDepthPasses && count > 0; ++pass)
+  {
+    int deepest = aliasfreeDeepestUnder(count);
+    if (deepest < reachable)
+    {
+      return 0;
+    }
+    float depth = intBitsToFloat(deepest >= 0 ? deepest : deepest ^ 0x7fffffff);
+    if (depth >= far)
+    {
+      break;
+    }
+    far = depth;
+    count = aliasfreeProject(n, far);
+  }
+  if (count < 0)
+  {
+    return -1;
+  }
+  aliasfreeHull(aliasfreePoints, count);
+  if (aliasfreeRegionSize < 3 && far < aliasfreeFar)
+  {
+    // Drawn shallower, a region can come out empty (its points all but
+    // one): then the deepest one stands.
+    aliasfreeHull(aliasfreePoints, aliasfreeProject(n, aliasfreeFar));
+  }
   return aliasfreeRegionSize < 3 ? 0 : 1;
 }
 

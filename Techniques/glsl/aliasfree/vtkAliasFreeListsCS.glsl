@@ -5,7 +5,14 @@
 // - ALIASFREE_BOUNDS: the bounds of the samples in the light's clip space
 //   and their greatest depth (to fit the map and the far plane, 4.3);
 // - ALIASFREE_COUNT: each sample's texel, and its index in the texel's list
-//   by atomic increment of the texel's count;
+//   by atomic increment of the texel's count; the texel's greatest sample
+//   depth;
+// - ALIASFREE_DEPTH_LEVEL: one level of the pyramid of greatest depths
+//   (each cell the greatest of the four below it), for culling influence
+//   regions (vtkAliasFreeCastersGS.glsl);
+// - ALIASFREE_DEPTH_MARKED: soft, restricted to silhouettes: the texels
+//   that no silhouette edge's region marked emptied, as the soft pass tests
+//   none of their samples (the levels are then built again);
 // - ALIASFREE_SCAN_BLOCKS, ALIASFREE_SCAN_TOP, ALIASFREE_SCAN_ADD: the
 //   exclusive prefix sum of the counts, the lists' offsets in one array
 //   (blocks of 1024 texels, then the blocks' sums, then added back);
@@ -29,7 +36,10 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(std430, binding = 0) buffer aliasfreeCountsBuffer { uint aliasfreeCounts[]; };
 #endif
 layout(std430, binding = 1) buffer aliasfreeOffsetsBuffer { uint aliasfreeOffsets[]; };
-#ifndef ALIASFREE_RESOLVE
+#if defined(ALIASFREE_RESOLVE) || defined(ALIASFREE_DEPTH_MARKED)
+// The texels in some silhouette edge's influence region (vtkAliasFreeCastersFS.glsl).
+layout(std430, binding = 2) readonly buffer aliasfreeMarksBuffer { uint aliasfreeMarks[]; };
+#else
 layout(std430, binding = 2) buffer aliasfreeBlocksBuffer { uint aliasfreeBlocks[]; };
 #endif
 // Per pixel: x = its texel (or aliasfreeNone) and y = its index in the
@@ -37,6 +47,11 @@ layout(std430, binding = 2) buffer aliasfreeBlocksBuffer { uint aliasfreeBlocks[
 layout(std430, binding = 3) buffer aliasfreePixelsBuffer { uvec2 aliasfreePixels[]; };
 layout(std430, binding = 4) buffer aliasfreeSamplesBuffer { vec4 aliasfreeSamples[]; };
 layout(std430, binding = 5) buffer aliasfreeHiddenBuffer { uint aliasfreeHidden[]; };
+#if defined(ALIASFREE_COUNT) || defined(ALIASFREE_DEPTH_LEVEL) || defined(ALIASFREE_DEPTH_MARKED)
+// The greatest view sample depth (order-preserving integers) of each texel,
+// then of each 2x2, 4x4, ... texels, level after level.
+layout(std430, binding = 6) buffer aliasfreeDepthsBuffer { int aliasfreeDepths[]; };
+#endif
 // Bounds as order-preserving integers: x min, max, y min, max (clip / w),
 // depth max; then the longest list and the number of samples; then the
 // nearest sample's distance to a positional light's centre.
@@ -188,6 +203,7 @@ void main()
         ivec2(aliasfreeMapSize - 1));
       uint texel = uint(t.y * aliasfreeMapSize + t.x);
       uint index = atomicAdd(aliasfreeCounts[texel], 1u);
+      atomicMax(aliasfreeDepths[texel], aliasfreeOrdered(dot(p - aliasfreeEye, aliasfreeAxis)));
       aliasfreePixels[pixel] = uvec2(texel, index);
       atomicMax(aliasfreeGroupStats[5], int(index) + 1);
       atomicAdd(aliasfreeGroupStats[6], 1);
@@ -276,6 +292,38 @@ void main()
 }
 #endif
 
+#ifdef ALIASFREE_DEPTH_LEVEL
+uniform ivec3 aliasfreeLevelFrom; // the level below: its first cell, cells a side (x and y)
+uniform ivec3 aliasfreeLevelTo;   // this level
+void main()
+{
+  ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(cell, aliasfreeLevelTo.yz)))
+  {
+    return;
+  }
+  int deepest = -0x7fffffff - 1;
+  for (int k = 0; k < 4; ++k)
+  {
+    ivec2 below = min(2 * cell + ivec2(k & 1, k >> 1), aliasfreeLevelFrom.yz - 1);
+    deepest = max(deepest, aliasfreeDepths[aliasfreeLevelFrom.x + below.y * aliasfreeLevelFrom.y + below.x]);
+  }
+  aliasfreeDepths[aliasfreeLevelTo.x + cell.y * aliasfreeLevelTo.y + cell.x] = deepest;
+}
+#endif
+
+#ifdef ALIASFREE_DEPTH_MARKED
+void main()
+{
+  uint i = gl_GlobalInvocationID.y * uint(aliasfreeMapSize) + gl_GlobalInvocationID.x;
+  if (gl_GlobalInvocationID.x < uint(aliasfreeMapSize) && i < uint(aliasfreeTexels) &&
+    aliasfreeMarks[i] == 0u)
+  {
+    aliasfreeDepths[i] = -0x7fffffff - 1;
+  }
+}
+#endif
+
 #ifdef ALIASFREE_SCATTER
 void main()
 {
@@ -301,7 +349,6 @@ void main()
 // words a mask.
 uniform int aliasfreeRestrict;        // soft: 1 where only marked texels hold masks
 uniform int aliasfreeListedOnly;      // 1: write only the pixels listed (a cube's later faces)
-layout(std430, binding = 2) readonly buffer aliasfreeMarksBuffer { uint aliasfreeMarks[]; };
 layout(std430, binding = 0) readonly buffer aliasfreeCentreBuffer { uint aliasfreeCentre[]; };
 uniform vec3 aliasfreeCameraPosition;
 layout(rgba32f, binding = 0) writeonly uniform image2D aliasfreeVisibility;
