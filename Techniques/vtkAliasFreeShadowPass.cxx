@@ -417,10 +417,10 @@ bool vtkAliasFreeShadowPass::RenderScreenSpace(const vtkRenderState* s)
 
   // Memory, before anything is allocated: the camera pass's two targets,
   // per pixel its entry and (at most) its sample, hidden bit and mask, per
-  // texel its count, offset and mark (and the draw's target), the depth
-  // pyramid, the lookup tables.
+  // texel its count, offset and mark (and the draws' targets: the map's
+  // size and half of it), the depth pyramid, the lookup tables.
   const size_t depthCells = DepthPyramidCells(this->MapSize);
-  double bytes = pixels * (2 * 16 + 8 + 16 + 0.125 + 4.0 * words) + texels * (4 + 4 + 4 + 1) +
+  double bytes = pixels * (2 * 16 + 8 + 16 + 0.125 + 4.0 * words) + texels * (4 + 4 + 4 + 1.25) +
     (texels / 1024 + 1) * 4.0 + depthCells * 4.0;
   for (const auto& light : lights)
   {
@@ -959,11 +959,16 @@ bool vtkAliasFreeShadowPass::TestCasters(FrustumPass& pass)
   vtkShadowTextureSpec target;
   target.Type = vtkShadowTextureSpec::Format::Byte;
   vtkTextureObject* scratch = this->Maps->GetScratch(0, target);
+  // The soft pass at half the resolution: a fragment tests 2x2 texels.
+  vtkShadowTextureSpec coarse = target;
+  coarse.Size = (mapSize + 1) / 2;
+  vtkTextureObject* coarseScratch = soft ? this->Maps->GetScratch(1, coarse) : nullptr;
   auto draw = [&](Kind kind)
   {
     vtkShadowDrawSetup setup;
     setup.View = &pass.Fitted;
-    setup.Colours = { scratch };
+    setup.Colours = { kind == Kind::Soft ? coarseScratch : scratch };
+    const float rasterSize = static_cast<float>(kind == Kind::Soft ? coarse.Size : mapSize);
     setup.DepthTest = false;
     setup.Draw = vtkShadowDrawSetup::Props::None;
     for (const vtkShadowCaster& caster : this->Casters->GetCasters())
@@ -997,6 +1002,7 @@ bool vtkAliasFreeShadowPass::TestCasters(FrustumPass& pass)
             "aliasfreeWorldToClip", const_cast<float*>(glm::value_ptr(clip)));
           program->SetUniform4f("aliasfreeLight", lightUniform);
           program->SetUniformf("aliasfreeMapSize", static_cast<float>(mapSize));
+          program->SetUniformf("aliasfreeRasterSize", rasterSize);
           program->SetUniformi("aliasfreeMapTexels", mapSize);
           program->SetUniformi("aliasfreeClosed", closed);
           program->SetUniformf("aliasfreeOrientation", orientation);

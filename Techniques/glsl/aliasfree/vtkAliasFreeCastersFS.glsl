@@ -1,7 +1,10 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
 // SPDX-License-Identifier: BSD-3-Clause
 // Tests a caster triangle against the view samples listed in this texel
-// (Sintorn et al., section 3.3; empty lists end at once):
+// (Sintorn et al., section 3.3; empty lists end at once), soft in this
+// cell of 2x2 texels (the soft pass draws at half the map's resolution:
+// llvmpipe runs a loop's body at least once a fragment, so a quarter of the
+// fragments over the same regions does less work):
 // - hard: a sample is hidden when it lies inside the planes through the
 //   triangle's edges and the light and behind the triangle's plane; its bit
 //   is set by an atomic OR;
@@ -72,9 +75,37 @@ float aliasfreeTolerance(vec3 p)
 
 void main()
 {
+#ifdef ALIASFREE_SOFT
+  // The cell's four texels' lists, those with samples deep enough.
+  ivec2 cell = ivec2(gl_FragCoord.xy);
+  int n = aliasfreeMapTexels;
+  int nearest = floatBitsToInt(aliasfreeNearest);
+  nearest = nearest >= 0 ? nearest : nearest ^ 0x7fffffff;
+  if (aliasfreeDepths[n * n + cell.y * ((n + 1) / 2) + cell.x] < nearest)
+  {
+    return; // no sample here, or every one nearer the light than the triangle
+  }
+  uint firsts[4], ends[4];
+  uint total = 0u;
+  for (int k = 0; k < 4; ++k)
+  {
+    ivec2 t = 2 * cell + ivec2(k & 1, k >> 1);
+    uint i = uint(t.y * n + t.x);
+    bool tested = t.x < n && t.y < n && aliasfreeDepths[i] >= nearest;
+    firsts[k] = tested ? aliasfreeOffsets[i] : 0u;
+    total += tested ? aliasfreeCounts[i] : 0u;
+    ends[k] = total;
+  }
+  vec3 normal = normalize(cross(aliasfreeB - aliasfreeA, aliasfreeC - aliasfreeA));
+  vec3 corners[3] = vec3[3](aliasfreeA, aliasfreeB, aliasfreeC);
+  for (uint j = 0u; j < total; ++j)
+  {
+    int k = j < ends[0] ? 0 : (j < ends[1] ? 1 : (j < ends[2] ? 2 : 3));
+    uint s = firsts[k] + j - (k == 0 ? 0u : ends[k - 1]);
+#else
   ivec2 texel = ivec2(gl_FragCoord.xy);
   uint index = uint(texel.y * aliasfreeMapTexels + texel.x);
-#if defined(ALIASFREE_SOFT) || defined(ALIASFREE_EDGES)
+#ifdef ALIASFREE_EDGES
   int nearest = floatBitsToInt(aliasfreeNearest);
   if (aliasfreeDepths[index] < (nearest >= 0 ? nearest : nearest ^ 0x7fffffff))
   {
@@ -91,11 +122,8 @@ void main()
   return;
 #endif
   uint first = aliasfreeOffsets[index];
+#endif
 #ifdef ALIASFREE_SOFT
-  vec3 normal = normalize(cross(aliasfreeB - aliasfreeA, aliasfreeC - aliasfreeA));
-  vec3 corners[3] = vec3[3](aliasfreeA, aliasfreeB, aliasfreeC);
-  for (uint s = first; s < first + count; ++s)
-  {
     vec3 p = aliasfreeSamples[s].xyz;
     // p's side of the triangle: light samples on the other side may be hidden.
     float side = dot(normal, p - aliasfreeA);

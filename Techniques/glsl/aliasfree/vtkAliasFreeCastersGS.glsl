@@ -39,6 +39,7 @@ in vec3 aliasfreeWorldIn[];
 uniform mat4 aliasfreeWorldToClip; // the fitted map
 uniform vec4 aliasfreeLight;       // world position (w = 1), or direction towards it (w = 0)
 uniform float aliasfreeMapSize;
+uniform float aliasfreeRasterSize; // of the target drawn: the map's, or half of it (soft)
 uniform int aliasfreeClosed;       // 1: the caster is closed, with outward normals...
 uniform float aliasfreeOrientation; // ... along +cross(b - a, c - a) (1) or against it (-1)
 #if defined(ALIASFREE_SOFT) || defined(ALIASFREE_EDGES)
@@ -119,7 +120,7 @@ void aliasfreeEmitGrown()
 {
   int n = aliasfreeRegionSize;
   // Half a texel, a little more so that rounding never loses a texel.
-  float h = 1.001 / aliasfreeMapSize;
+  float h = 1.001 / aliasfreeRasterSize;
   vec2 grown[aliasfreeMaxPoints + 4];
   int count = 0;
   for (int i = 0; i < n; ++i)
