@@ -7,19 +7,16 @@ light, in a small window so that CI can afford it. Every technique draws it
 (none refuses, none crashes) and is measured against the ray-cast truth:
 its umbra dark, its error no worse than `hard`'s (`smoothies` barely moves
 from `hard` on so fine a silhouette: within 2%), `contact`, `silhouette` and
-`omni` under it.
-
-`aliasfree` soft is left out: on llvmpipe one frame of it takes minutes at
-this size (its work grows with the triangles times their influence regions'
-texels, not with the pixels; docs/benchmarks.md, "Scale"), which CI cannot
-afford until its cost at scale is brought down. `aliasfree:hard` is in."""
+`omni` under it, and `aliasfree` soft, exact but for its light samples, at
+most a quarter of it (0.07 of it when written). Its frame takes seconds
+here (docs/benchmarks.md, "`aliasfree` at scale"), not minutes as it did."""
 import json
 import os
 import tempfile
 
 import shadowtest as st
 
-TECHNIQUES = ["hard", "contact", "omni", "silhouette", "smoothies", "aliasfree:hard"]
+TECHNIQUES = ["hard", "contact", "omni", "silhouette", "smoothies", "aliasfree:hard", "aliasfree"]
 SCENE = {
     "camera": {"position": [2.4, 2.8, 3.4], "focal_point": [0.0, 0.7, 0.0]},
     "lights": [{"type": "spot", "position": [2.5, 5.0, 1.5], "focal_point": [0.0, 0.0, 0.0],
@@ -43,7 +40,7 @@ for t in TECHNIQUES:
 
 failures = []
 limits = {"hard": 1.0, "contact": 0.8, "omni": 0.95, "silhouette": 0.7, "smoothies": 1.02,
-          "aliasfree:hard": 1.3}
+          "aliasfree:hard": 1.3, "aliasfree": 0.25}
 for t in TECHNIQUES:
     if t not in figures:
         failures.append("%s drew nothing" % t)
@@ -55,6 +52,6 @@ for t in TECHNIQUES:
         failures.append("%s: the umbra is lit (mean visibility %.3f)" % (t, figures[t]["umbra"]))
 for failure in failures:
     print("FAIL: " + failure)
-st.check(not failures, "every technique but aliasfree soft draws a million-triangle caster, "
-         "its umbra dark and its error no worse than hard's, contact, silhouette and omni "
-         "under it")
+st.check(not failures, "every technique draws a million-triangle caster, its umbra dark and "
+         "its error no worse than hard's, contact, silhouette and omni under it, aliasfree "
+         "soft at most a quarter of it")
