@@ -47,9 +47,10 @@
  * the pass reports one clear error and draws the scene without shadows.
  * Point lights take their six cube faces in turn, each with its own lists.
  * Translucent surfaces, which give no view samples, keep the framework's
- * hard shadow-map lookup. Memory for the lists and masks is reported
- * (GetMemoryBytes()) and bounded by MemoryLimit: a frame that would exceed it
- * is drawn unshadowed with an error. So is a frame whose soft spot or point
+ * hard shadow-map lookup. Memory for the lists, masks and the casters'
+ * triangles and edges is reported (GetMemoryBytes()) and bounded by
+ * MemoryLimit: a frame that would exceed it is drawn unshadowed with an
+ * error. So is a frame whose soft spot or point
  * light reaches a surface it lights (its radius at least that surface's
  * distance from its centre), whose work would have no bound.
  *
@@ -190,9 +191,10 @@ public:
 
   ///@{
   /**
-   * Most memory, in MiB, the lists, masks and lookup tables of one frame may
-   * take; a frame that needs more is drawn unshadowed, with an error.
-   * Default 1024.
+   * Most memory, in MiB, the lists, masks and lookup tables of one frame and
+   * the casters' triangles and edges (about 520 bytes a triangle) may take;
+   * a frame that needs more is drawn unshadowed, with an error. Default
+   * 2048: about 3.5M caster triangles at 512x512.
    */
   vtkSetClampMacro(MemoryLimit, double, 1.0, 65536.0);
   vtkGetMacro(MemoryLimit, double);
@@ -200,9 +202,9 @@ public:
 
   ///@{
   /**
-   * Results of the last frame: bytes of the GPU buffers the technique holds,
-   * the view samples stored in lists (over every light), and the longest
-   * list.
+   * Results of the last frame: bytes of the buffers and caster geometry the
+   * technique holds (an estimate, made before they are allocated), the view
+   * samples stored in lists (over every light), and the longest list.
    */
   vtkGetMacro(MemoryBytes, double);
   vtkGetMacro(NumberOfViewSamples, vtkIdType);
@@ -233,7 +235,7 @@ protected:
   int MaximumFramesAccumulated = 64;
   bool BentNormals = false;
   unsigned int Seed = 1;
-  double MemoryLimit = 1024.0;
+  double MemoryLimit = 2048.0;
   double MemoryBytes = 0.0;
   vtkIdType NumberOfViewSamples = 0;
   int LongestList = 0;

@@ -48,7 +48,8 @@ Technique AliasFree()
         "towards their faces' so that they darken before the faces turned from the light",
         &vtkAliasFreeShadowPass::SetBentNormals, &vtkAliasFreeShadowPass::GetBentNormals),
       BindClamped<vtkAliasFreeShadowPass, double>("memory_limit", Number,
-        "MiB the lists, masks and tables may take; a frame needing more is drawn unshadowed",
+        "MiB the lists, masks, tables and the casters' triangles and edges may take; a frame "
+        "needing more is drawn unshadowed",
         VTK_SHADOW_CLAMPED(vtkAliasFreeShadowPass, MemoryLimit)),
       Bind<vtkAliasFreeShadowPass, unsigned int>("seed", Integer, Between(0.0, 2147483647.0),
         "soft: seed of the light samples' positions", &vtkAliasFreeShadowPass::SetSeed,

@@ -351,6 +351,34 @@ st.check(result.returncode == 1 and result.stderr.count("this frame needs") == 2
          "over MemoryLimit: one error naming it, the frame unshadowed (%s)"
          % result.stderr.strip().splitlines()[-1][-160:])
 
+# The casters count too: a ball and floor of 64,640 triangles (46 MiB of
+# triangles and edges, CPU and GPU) under a limit its lists alone fit in
+# (about 10 MiB at 96x96): refused, the error naming the triangles; under
+# one that holds both, drawn with its shadow.
+for limit, refused in [(40.0, True), (160.0, False)]:
+    scene = st.ball_scene(height=1.0, light_radius=0.2, technique="aliasfree", size=(96, 96),
+                          map_size=256, params={"memory_limit": limit})
+    scene["actors"][1]["params"]["resolution"] = 256
+    with tempfile.TemporaryDirectory() as folder:
+        scene_file = os.path.join(folder, "scene.json")
+        with open(scene_file, "w") as f:
+            json.dump(scene, f)
+        output = os.path.join(folder, "out.png")
+        result = st.run(["render", scene_file, "--shadow-only", "--output", output],
+                        check=False)
+        pixels = st.read_png(output)
+        visibility = pixels[:, :, 0][pixels[:, :, 1] == 255] / 255.0
+    if refused:
+        st.check(result.returncode == 1 and "64640 triangles" in result.stderr and
+                 "triangles and their edges, over MemoryLimit" in result.stderr and
+                 visibility.min() > 0.99,
+                 "a 65k-triangle caster over MemoryLimit: refused, naming its triangles (%s)"
+                 % result.stderr.strip().splitlines()[-1][-200:])
+    else:
+        st.check(result.returncode == 0 and visibility.min() < 0.05,
+                 "the same caster under a limit that holds it: drawn, its shadow dark "
+                 "(darkest %.3f)" % visibility.min())
+
 # A light so large that it reaches the surfaces it lights: one clear error,
 # at once, drawn without shadows (before, minutes a frame: every triangle's
 # influence region covered the map).
