@@ -31,6 +31,7 @@ import argparse
 import json
 import math
 import os
+import re
 import signal
 import subprocess
 import sys
@@ -97,8 +98,15 @@ def bench(program, scene, techniques, size, frames, timeout):
         err.seek(0)
         lines = [json.loads(line) for line in out.read().splitlines() if line.startswith("{")]
         if os.waitstatus_to_exitcode(status) != 0 or not lines:
+            # The program's own error line, else the first line (VTK's log,
+            # coloured), without the prefixes that say nothing.
             problem = [line for line in err.read().splitlines() if line.strip()]
-            return [], peak, (problem[0] if problem else "exit %d" % status)[:160]
+            own = [line for line in problem if line.startswith("softshadows: error:")]
+            message = (own or problem or ["exit %d" % status])[0]
+            message = re.sub(r"\x1b\[[0-9;]*m", "", message)
+            for prefix in ["softshadows: error: ", "VTK reported an error while rendering: "]:
+                message = message.replace(prefix, "")
+            return [], peak, message[:160]
         return lines, peak, None
 
 
