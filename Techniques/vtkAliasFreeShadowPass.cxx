@@ -83,12 +83,15 @@ enum Binding : unsigned int
   CasterDepths = 7 ///< while the casters draw (no statistics then)
 };
 
-// What a caster's triangle and edge hold, CPU and GPU: the triangles
-// (cells and three vertices each), each edge's four vertices with its
-// faces' normals (and, while they are built, the adjacency filter's output).
-// Measured: about 760 MB for the 1M-triangle gyroid's 1.5M edges.
+// What a caster's triangle and edge take, CPU and GPU: the triangles (cells
+// and three vertices each); each edge's entry in the adjacency filter's
+// output, while the triangles are built; and for the soft pass restricted to
+// silhouettes, its four vertices with its faces' normals. Measured on the
+// gyroid: 290 MB (hard) and 780 MB (soft) more than `hard` at 1M triangles,
+// 1.65 GB (hard) at 10M.
 constexpr double BytesPerTriangle = 68.0;
-constexpr double BytesPerEdge = 450.0;
+constexpr double BytesPerEdgeBuilding = 100.0;
+constexpr double BytesPerEdgeKept = 350.0;
 
 // Triangles of `data`'s polygons and strips, as vtkTriangleFilter makes them.
 double CountTriangles(vtkPolyData* data)
@@ -135,7 +138,8 @@ float FromOrdered(int i)
 
 // What the pass keeps of each caster's polydata: its triangles, and whether
 // they close a volume (every edge used once in each direction) and which
-// way their normals point (the sign of the enclosed volume).
+// way their normals point (the sign of the enclosed volume); its edges for
+// the soft pass's restriction to silhouettes only.
 struct CasterTriangles
 {
   std::shared_ptr<vtkShadowGeometry> Geometry;
@@ -147,24 +151,26 @@ struct CasterTriangles
 // Each edge of `edges` (vtkEdgeAdjacencyFilter's output) as a line with
 // adjacency (a, b, a, b) whose points carry its two faces' normals:
 // aliasfreeFace0 (w = 1 for edges that are always silhouettes: borders,
-// non-manifold or inconsistently oriented ones) and aliasfreeFace1. Sets
-// `closed` when there are none of those: the faces close a volume.
-vtkSmartPointer<vtkPolyData> EdgesWithFaces(vtkPolyData* edges, bool& closed)
+// non-manifold or inconsistently oriented ones) and aliasfreeFace1; none
+// without `geometry`. Sets `closed` when there are none of those: the faces
+// close a volume.
+vtkSmartPointer<vtkPolyData> EdgesWithFaces(vtkPolyData* edges, bool geometry, bool& closed)
 {
   vtkDataArray* types = edges->GetCellData()->GetArray("EdgeType");
   vtkDataArray* consistent = edges->GetCellData()->GetArray("ConsistentOrientation");
   vtkDataArray* normals = edges->GetCellData()->GetArray("FaceNormals");
   const vtkIdType count = edges->GetNumberOfLines();
+  const vtkIdType vertices = geometry ? 4 * count : 0;
   vtkNew<vtkPoints> points;
   points->SetDataTypeToFloat();
-  points->SetNumberOfPoints(4 * count);
+  points->SetNumberOfPoints(vertices);
   vtkNew<vtkFloatArray> face0, face1;
   face0->SetName("aliasfreeFace0");
   face0->SetNumberOfComponents(4);
-  face0->SetNumberOfTuples(4 * count);
+  face0->SetNumberOfTuples(vertices);
   face1->SetName("aliasfreeFace1");
   face1->SetNumberOfComponents(3);
-  face1->SetNumberOfTuples(4 * count);
+  face1->SetNumberOfTuples(vertices);
   vtkNew<vtkCellArray> lines;
   vtkIdType n = 0;
   const vtkIdType* ids = nullptr;
@@ -173,10 +179,14 @@ vtkSmartPointer<vtkPolyData> EdgesWithFaces(vtkPolyData* edges, bool& closed)
   vtkCellArray* cells = edges->GetLines();
   for (cells->InitTraversal(); cells->GetNextCell(n, ids); ++e)
   {
-    double f[6];
-    normals->GetTuple(e, f);
     const bool always = types->GetComponent(e, 0) != 1.0 || consistent->GetComponent(e, 0) == 0.0;
     closed = closed && !always;
+    if (!geometry)
+    {
+      continue;
+    }
+    double f[6];
+    normals->GetTuple(e, f);
     const float first[4] = { static_cast<float>(f[0]), static_cast<float>(f[1]),
       static_cast<float>(f[2]), always ? 1.0f : 0.0f };
     const float second[3] = { static_cast<float>(f[3]), static_cast<float>(f[4]),
@@ -191,6 +201,10 @@ vtkSmartPointer<vtkPolyData> EdgesWithFaces(vtkPolyData* edges, bool& closed)
     }
     lines->InsertNextCell(4, line);
   }
+  if (!geometry)
+  {
+    return nullptr;
+  }
   auto result = vtkSmartPointer<vtkPolyData>::New();
   result->SetPoints(points);
   result->SetLines(lines);
@@ -199,7 +213,7 @@ vtkSmartPointer<vtkPolyData> EdgesWithFaces(vtkPolyData* edges, bool& closed)
   return result;
 }
 
-void BuildTriangles(vtkPolyData* data, CasterTriangles& value)
+void BuildTriangles(vtkPolyData* data, bool withEdges, CasterTriangles& value)
 {
   vtkNew<vtkTriangleFilter> triangles;
   triangles->SetInputData(vtkShadowCasterRegistry::MergedFaces(data));
@@ -211,10 +225,14 @@ void BuildTriangles(vtkPolyData* data, CasterTriangles& value)
   adjacency->SetInputData(mesh);
   adjacency->Update();
   bool closed = false;
-  value.Edges = vtkShadowGeometry::NewShared();
-  value.Edges->SetPrimitive(vtkShadowGeometry::Primitive::LinesAdjacency);
-  value.Edges->SetBatchSize(CasterBatch);
-  value.Edges->SetInput(EdgesWithFaces(adjacency->GetOutput(), closed));
+  auto edges = EdgesWithFaces(adjacency->GetOutput(), withEdges, closed);
+  if (withEdges)
+  {
+    value.Edges = vtkShadowGeometry::NewShared();
+    value.Edges->SetPrimitive(vtkShadowGeometry::Primitive::LinesAdjacency);
+    value.Edges->SetBatchSize(CasterBatch);
+    value.Edges->SetInput(edges);
+  }
 
   // Divergence theorem: the signed volume of the tetrahedra to the origin
   // says which way a closed mesh's normals point.
@@ -264,7 +282,7 @@ std::string WithDefines(const std::string& source, const std::string& defines)
 
 struct vtkAliasFreeShadowPass::Internals
 {
-  vtkShadowCasterCache<CasterTriangles> Casters;
+  vtkShadowCasterCache<CasterTriangles, bool> Casters; ///< built with edges or not
   vtkAliasFreeBentNormals Bent; // receivers' bent normals (section 6), when on
   vtkShadowCompute::Program Bounds, Count, DepthLevel, DepthMarked, ScanBlocks, ScanTop, ScanAdd,
     Scatter, Resolve, BuildLookup;
@@ -455,7 +473,9 @@ bool vtkAliasFreeShadowPass::RenderScreenSpace(const vtkRenderState* s)
       triangles += CountTriangles(caster.Data);
     }
   }
-  bytes += triangles * (BytesPerTriangle + 1.5 * BytesPerEdge);
+  const bool withEdges = soft && this->RestrictToSilhouettes;
+  bytes += triangles *
+    (BytesPerTriangle + 1.5 * (BytesPerEdgeBuilding + (withEdges ? BytesPerEdgeKept : 0.0)));
   for (const auto& light : lights)
   {
     if (soft && light.Radius > 0.0)
@@ -973,6 +993,9 @@ bool vtkAliasFreeShadowPass::TestCasters(FrustumPass& pass)
   const vtkShadowFrustum& view = pass.View;
   const bool soft = pass.Soft;
   const bool restrict = pass.Restrict;
+  // Edges are kept for every light of a soft pass restricted to silhouettes
+  // (one with no radius too), so that mixed lights do not rebuild them.
+  const bool withEdges = this->Variant == Soft && this->RestrictToSilhouettes;
   const int words = pass.Words;
   const int mapSize = this->MapSize;
   const float reach = pass.Reach, far = pass.Far;
@@ -1012,7 +1035,11 @@ bool vtkAliasFreeShadowPass::TestCasters(FrustumPass& pass)
       {
         continue;
       }
-      CasterTriangles& triangles = in.Casters.Get(caster, BuildTriangles);
+      CasterTriangles& triangles = in.Casters.Get(
+        caster,
+        [withEdges](vtkPolyData* data, CasterTriangles& value)
+        { BuildTriangles(data, withEdges, value); },
+        withEdges);
       vtkShadowGeometry* geometry =
         kind == Kind::Edges ? triangles.Edges.get() : triangles.Geometry.get();
       if (kind == Kind::Edges)

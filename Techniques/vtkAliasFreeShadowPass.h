@@ -192,9 +192,10 @@ public:
   ///@{
   /**
    * Most memory, in MiB, the lists, masks and lookup tables of one frame and
-   * the casters' triangles and edges (about 520 bytes a triangle) may take;
-   * a frame that needs more is drawn unshadowed, with an error. Default
-   * 2048: about 3.5M caster triangles at 512x512.
+   * the casters' triangles and edges (about 740 bytes a triangle soft, 220
+   * hard) may take; a frame that needs more is drawn unshadowed, with an
+   * error. Default 2048: about 2.8M caster triangles soft, 9M hard, at
+   * 512x512.
    */
   vtkSetClampMacro(MemoryLimit, double, 1.0, 65536.0);
   vtkGetMacro(MemoryLimit, double);
