@@ -1027,6 +1027,7 @@ bool vtkAliasFreeShadowPass::TestCasters(FrustumPass& pass)
     setup.View = &pass.Fitted;
     setup.Colours = { kind == Kind::Soft ? coarseScratch : scratch };
     const float rasterSize = static_cast<float>(kind == Kind::Soft ? coarse.Size : mapSize);
+    const float rasterScale = kind == Kind::Soft ? 0.5f * mapSize / coarse.Size : 1.0f;
     setup.DepthTest = false;
     setup.Draw = vtkShadowDrawSetup::Props::None;
     for (const vtkShadowCaster& caster : this->Casters->GetCasters())
@@ -1065,6 +1066,7 @@ bool vtkAliasFreeShadowPass::TestCasters(FrustumPass& pass)
           program->SetUniform4f("aliasfreeLight", lightUniform);
           program->SetUniformf("aliasfreeMapSize", static_cast<float>(mapSize));
           program->SetUniformf("aliasfreeRasterSize", rasterSize);
+          program->SetUniformf("aliasfreeRasterScale", rasterScale);
           program->SetUniformi("aliasfreeMapTexels", mapSize);
           program->SetUniformi("aliasfreeClosed", closed);
           program->SetUniformf("aliasfreeOrientation", orientation);

@@ -39,7 +39,12 @@ in vec3 aliasfreeWorldIn[];
 uniform mat4 aliasfreeWorldToClip; // the fitted map
 uniform vec4 aliasfreeLight;       // world position (w = 1), or direction towards it (w = 0)
 uniform float aliasfreeMapSize;
-uniform float aliasfreeRasterSize; // of the target drawn: the map's, or half of it (soft)
+// The target drawn: its size, and the map's NDC scaled about -1 into it
+// ((ndc + 1) scale - 1), so that its cell k covers the map's texels from
+// k / scale on: 1 at the map's size; soft, half of it rounded up, and n / 2R,
+// a cell for texels 2k and 2k + 1 of an odd map too.
+uniform float aliasfreeRasterSize;
+uniform float aliasfreeRasterScale;
 uniform int aliasfreeClosed;       // 1: the caster is closed, with outward normals...
 uniform float aliasfreeOrientation; // ... along +cross(b - a, c - a) (1) or against it (-1)
 #if defined(ALIASFREE_SOFT) || defined(ALIASFREE_EDGES)
@@ -73,7 +78,8 @@ const int aliasfreeDepthPasses = 2; // lookups of the depth pyramid a region (a 
 vec2 aliasfreeRegion[aliasfreeMaxPoints];
 int aliasfreeRegionSize = 0;
 
-void aliasfreeEmitVertex(vec2 ndc)
+// A vertex at `ndc`, in the target's clip space (the whole map: no scaling).
+void aliasfreeEmitVertex(vec2 ndc, bool inMap)
 {
 #ifdef ALIASFREE_SOFT
   aliasfreeA = aliasfreeWorldIn[0];
@@ -83,7 +89,7 @@ void aliasfreeEmitVertex(vec2 ndc)
 #if defined(ALIASFREE_SOFT) || defined(ALIASFREE_EDGES)
   aliasfreeNearest = aliasfreeNearestDepth;
 #endif
-  gl_Position = vec4(ndc, 0.0, 1.0);
+  gl_Position = vec4(inMap ? (ndc + 1.0) * aliasfreeRasterScale - 1.0 : ndc, 0.0, 1.0);
   EmitVertex();
 }
 
@@ -91,10 +97,10 @@ void aliasfreeEmitVertex(vec2 ndc)
 // light's eye plane, a light inside its reach).
 void aliasfreeEmitAll()
 {
-  aliasfreeEmitVertex(vec2(-1.0, -1.0));
-  aliasfreeEmitVertex(vec2(1.0, -1.0));
-  aliasfreeEmitVertex(vec2(-1.0, 1.0));
-  aliasfreeEmitVertex(vec2(1.0, 1.0));
+  aliasfreeEmitVertex(vec2(-1.0, -1.0), false);
+  aliasfreeEmitVertex(vec2(1.0, -1.0), false);
+  aliasfreeEmitVertex(vec2(-1.0, 1.0), false);
+  aliasfreeEmitVertex(vec2(1.0, 1.0), false);
   EndPrimitive();
 }
 
@@ -119,8 +125,9 @@ float aliasfreeCross(vec2 a, vec2 b)
 void aliasfreeEmitGrown()
 {
   int n = aliasfreeRegionSize;
-  // Half a texel, a little more so that rounding never loses a texel.
-  float h = 1.001 / aliasfreeRasterSize;
+  // Half a cell of the target, a little more so that rounding never loses
+  // one (in the map's NDC).
+  float h = 1.001 / (aliasfreeRasterSize * aliasfreeRasterScale);
   vec2 grown[aliasfreeMaxPoints + 4];
   int count = 0;
   for (int i = 0; i < n; ++i)
@@ -141,10 +148,10 @@ void aliasfreeEmitGrown()
     }
   }
   int left = 1, right = count - 1;
-  aliasfreeEmitVertex(grown[0]);
+  aliasfreeEmitVertex(grown[0], true);
   for (bool fromLeft = true; left <= right; fromLeft = !fromLeft)
   {
-    aliasfreeEmitVertex(fromLeft ? grown[left++] : grown[right--]);
+    aliasfreeEmitVertex(fromLeft ? grown[left++] : grown[right--], true);
   }
   EndPrimitive();
 }
