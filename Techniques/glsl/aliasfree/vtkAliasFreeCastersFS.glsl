@@ -40,7 +40,7 @@ layout(std430, binding = 2) buffer aliasfreeMarksBuffer { uint aliasfreeMarks[];
 // restricted to silhouettes: of the marked texels only, the others read as
 // empty), and the depth beyond which this triangle may hide a sample.
 layout(std430, binding = 7) readonly buffer aliasfreeDepthsBuffer { int aliasfreeDepths[]; };
-flat in float aliasfreeNearest;
+flat in int aliasfreeReachable;
 #endif
 uniform int aliasfreeClosed;
 uniform float aliasfreeOrientation;
@@ -79,9 +79,7 @@ void main()
   // The cell's four texels' lists, those with samples deep enough.
   ivec2 cell = ivec2(gl_FragCoord.xy);
   int n = aliasfreeMapTexels;
-  int nearest = floatBitsToInt(aliasfreeNearest);
-  nearest = nearest >= 0 ? nearest : nearest ^ 0x7fffffff;
-  if (aliasfreeDepths[n * n + cell.y * ((n + 1) / 2) + cell.x] < nearest)
+  if (aliasfreeDepths[n * n + cell.y * ((n + 1) / 2) + cell.x] < aliasfreeReachable)
   {
     return; // no sample here, or every one nearer the light than the triangle
   }
@@ -91,7 +89,7 @@ void main()
   {
     ivec2 t = 2 * cell + ivec2(k & 1, k >> 1);
     uint i = uint(t.y * n + t.x);
-    bool tested = t.x < n && t.y < n && aliasfreeDepths[i] >= nearest;
+    bool tested = t.x < n && t.y < n && aliasfreeDepths[i] >= aliasfreeReachable;
     firsts[k] = tested ? aliasfreeOffsets[i] : 0u;
     total += tested ? aliasfreeCounts[i] : 0u;
     ends[k] = total;
@@ -106,8 +104,7 @@ void main()
   ivec2 texel = ivec2(gl_FragCoord.xy);
   uint index = uint(texel.y * aliasfreeMapTexels + texel.x);
 #ifdef ALIASFREE_EDGES
-  int nearest = floatBitsToInt(aliasfreeNearest);
-  if (aliasfreeDepths[index] < (nearest >= 0 ? nearest : nearest ^ 0x7fffffff))
+  if (aliasfreeDepths[index] < aliasfreeReachable)
   {
     return; // no sample here, or every one nearer the light than the triangle
   }

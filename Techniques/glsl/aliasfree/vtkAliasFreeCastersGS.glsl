@@ -57,8 +57,9 @@ uniform float aliasfreeFar;     // depth of the farthest view sample
 // The pyramid of the view samples' greatest depths, order-preserving
 // integers (vtkAliasFreeListsCS.glsl): texels, then 2x2 texels, and so on.
 layout(std430, binding = 7) readonly buffer aliasfreeDepthsBuffer { int aliasfreeDepths[]; };
-flat out float aliasfreeNearest; // the depth beyond which a sample may be hidden
-float aliasfreeNearestDepth = 0.0;
+// The depth beyond which a sample may be hidden, as the pyramid holds it.
+flat out int aliasfreeReachable;
+int aliasfreeReachableDepth = 0;
 #endif
 
 #ifdef ALIASFREE_SOFT
@@ -87,7 +88,7 @@ void aliasfreeEmitVertex(vec2 ndc, bool inMap)
   aliasfreeC = aliasfreeWorldIn[2];
 #endif
 #if defined(ALIASFREE_SOFT) || defined(ALIASFREE_EDGES)
-  aliasfreeNearest = aliasfreeNearestDepth;
+  aliasfreeReachable = aliasfreeReachableDepth;
 #endif
   gl_Position = vec4(inMap ? (ndc + 1.0) * aliasfreeRasterScale - 1.0 : ndc, 0.0, 1.0);
   EmitVertex();
@@ -335,10 +336,10 @@ int aliasfreeInfluence(int n)
   float lightDeepest = aliasfreeLight.w > 0.5
     ? dot(aliasfreeLight.xyz - aliasfreeEye, aliasfreeAxis) + aliasfreeReach
     : -3.0e38;
-  aliasfreeNearestDepth = nearest > lightDeepest ? nearest : -3.0e38;
-  int reachable = aliasfreeOrdered(aliasfreeNearestDepth);
+  nearest = nearest > lightDeepest ? nearest : -3.0e38;
+  aliasfreeReachableDepth = aliasfreeOrdered(nearest);
   float far = aliasfreeFar;
-  if (aliasfreeNearestDepth > far)
+  if (nearest > far)
   {
     return 0;
   }
@@ -346,7 +347,7 @@ int aliasfreeInfluence(int n)
   for (int pass = 0; pass < aliasfreeDepthPasses && count > 0; ++pass)
   {
     int deepest = aliasfreeDeepestUnder(count);
-    if (deepest < reachable)
+    if (deepest < aliasfreeReachableDepth)
     {
       return 0;
     }
