@@ -473,9 +473,9 @@ bool vtkAliasFreeShadowPass::RenderScreenSpace(const vtkRenderState* s)
       triangles += CountTriangles(caster.Data);
     }
   }
-  const bool withEdges = soft && this->RestrictToSilhouettes;
   bytes += triangles *
-    (BytesPerTriangle + 1.5 * (BytesPerEdgeBuilding + (withEdges ? BytesPerEdgeKept : 0.0)));
+    (BytesPerTriangle +
+      1.5 * (BytesPerEdgeBuilding + (this->KeepsEdges() ? BytesPerEdgeKept : 0.0)));
   for (const auto& light : lights)
   {
     if (soft && light.Radius > 0.0)
@@ -995,7 +995,7 @@ bool vtkAliasFreeShadowPass::TestCasters(FrustumPass& pass)
   const bool restrict = pass.Restrict;
   // Edges are kept for every light of a soft pass restricted to silhouettes
   // (one with no radius too), so that mixed lights do not rebuild them.
-  const bool withEdges = this->Variant == Soft && this->RestrictToSilhouettes;
+  const bool withEdges = this->KeepsEdges();
   const int words = pass.Words;
   const int mapSize = this->MapSize;
   const float reach = pass.Reach, far = pass.Far;

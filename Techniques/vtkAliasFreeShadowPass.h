@@ -259,6 +259,8 @@ private:
   void PrepareLightSamples(FrustumPass& pass);
   bool TestCasters(FrustumPass& pass);
   void Resolve(FrustumPass& pass);
+  /// Whether the casters keep their edges: soft, restricted to silhouettes.
+  bool KeepsEdges() const { return this->Variant == Soft && this->RestrictToSilhouettes; }
 };
 
 #endif
