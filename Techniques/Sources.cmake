@@ -41,6 +41,7 @@ set(softshadows_techniques_shaders
   glsl/aliasfree/vtkAliasFreeListsCS.glsl
   glsl/aliasfree/vtkAliasFreeLookup.glsl
   glsl/aliasfree/vtkAliasFreeLookupBuildCS.glsl
+  glsl/contact/vtkContactCoarseFS.glsl
   glsl/contact/vtkContactCommonFS.glsl
   glsl/contact/vtkContactDistanceFS.glsl
   glsl/contact/vtkContactGaussianFS.glsl

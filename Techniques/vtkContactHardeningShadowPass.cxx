@@ -15,6 +15,7 @@
 #include "vtkShadowVTKVersion.h"
 #include "vtkTextureObject.h"
 
+#include "vtkContactCoarseFS.h"
 #include "vtkContactCommonFS.h"
 #include "vtkContactDistanceFS.h"
 #include "vtkContactGaussianFS.h"
@@ -43,6 +44,9 @@ namespace
 constexpr int MaximumTaps = 64;
 // Pixels (of the distance map) on a side of a classification tile.
 constexpr int TileSize = 8;
+// The PCF disc's radius (texels) from which it taps the coarse level, 2x2
+// texels a tap (vtkContactPCFFS.glsl).
+constexpr float CoarseReach = 4.0f;
 
 // Taps (x, y in [-1,1], weight) with x and y scaled to a kernel `size`
 // pixels wide and, when `round`, rounded to whole pixels as the shaders
@@ -67,7 +71,8 @@ class vtkContactHardeningShadowPass::vtkInternals
 public:
   // This frame's screen-space passes, kept by the screen buffers.
   vtkOpenGLQuadHelper *Tiles = nullptr, *TileSpread = nullptr, *Prepare = nullptr,
-                      *MultiPass = nullptr, *PCF = nullptr, *Gaussian = nullptr, *Resolve = nullptr;
+                      *MultiPass = nullptr, *Coarse = nullptr, *PCF = nullptr, *Gaussian = nullptr,
+                      *Resolve = nullptr;
   unsigned int Queries[2] = { 0, 0 }; // did the last blur pass draw any pixel?
   size_t CameraPassFirst = 0;         // the first light the camera pass draws
   std::vector<int> CameraPassUnits;   // texture units of its lights' maps
@@ -218,19 +223,25 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
   in.Prepare = this->GetScreenQuad("contact.prepare",
     withCommon(vtkContactPrepareFS, "#define CONTACT_WIDTHS " + widths + "\n"), widths);
   in.MultiPass = this->GetScreenQuad("contact.multipass", withCommon(vtkContactMultiPassFS));
+  in.Coarse = this->GetScreenQuad("contact.coarse", withCommon(vtkContactCoarseFS));
   in.PCF = this->GetScreenQuad("contact.pcf", withCommon(vtkContactPCFFS));
   in.Gaussian = this->GetScreenQuad("contact.gaussian", withCommon(vtkContactGaussianFS));
   in.Resolve = this->GetScreenQuad("contact.resolve", withCommon(vtkContactResolveFS));
-  if (!in.Tiles || !in.TileSpread || !in.Prepare || !in.MultiPass || !in.PCF || !in.Gaussian ||
-    !in.Resolve)
+  if (!in.Tiles || !in.TileSpread || !in.Prepare || !in.MultiPass || !in.Coarse || !in.PCF ||
+    !in.Gaussian || !in.Resolve)
   {
     return false;
   }
 
-  // Only the single Gaussian blurs through a second buffer (rows, then columns).
+  // Only the single Gaussian blurs through a second buffer (rows, then
+  // columns), and only PCF taps a coarse level.
   if (this->Variant != Gaussian)
   {
     this->Screen->ReleaseTexture("contact.filter1");
+  }
+  if (this->Variant != PCF)
+  {
+    this->Screen->ReleaseTexture("contact.coarse");
   }
 
   // Blur variances add: the variance before each pass, and each pass's, of
@@ -612,11 +623,26 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
   }
   else
   {
+    // The coarse level for the widest discs, then the discs.
+    const int coarseW = (screen->GetWidth() + 1) / 2;
+    const int coarseH = (screen->GetHeight() + 1) / 2;
+    vtkTextureObject* coarse = screen->GetTexture("contact.coarse", 4, coarseW, coarseH);
+    {
+      Targets bound(screen, { coarse }, nullptr, coarseW, coarseH);
+      in.Draw(
+        screen, in.Coarse, filtered, [](vtkShaderProgram*) {}, tolerance, this->DebugView);
+    }
+    coarse->Activate();
     toPacked(
       in.PCF, filtered,
       [&](vtkShaderProgram* program)
-      { program->SetUniformi("contactMaximumKernel", this->MaximumKernelSize); },
+      {
+        program->SetUniformi("contactMaximumKernel", this->MaximumKernelSize);
+        program->SetUniformi("contactCoarse", coarse->GetTextureUnit());
+        program->SetUniformf("contactCoarseReach", CoarseReach);
+      },
       chainCodes);
+    coarse->Deactivate();
   }
   state->PopFramebufferBindings();
 }

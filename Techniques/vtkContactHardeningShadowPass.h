@@ -11,7 +11,8 @@
  * umbra (the early-out of section 5) and dilate D outwards (pass 3). Pass 4
  * then softens S with one of three variants:
  *
- *  - PCF: the average of S over a disc D pixels across (the default),
+ *  - PCF: the average of S over a disc D pixels across (the default; wide
+ *    discs average 2x2-pixel blocks of a coarse level),
  *  - Gaussian: one separable Gaussian blur of S with a D-sized kernel,
  *  - MultiPass: up to PassLimit Poisson-disk Gaussian blurs of S (PoissonTaps
  *    precomputed points in [-1,1]^2, the first at the origin, normalised
