@@ -349,11 +349,15 @@ std::string AbsoluteObjIndices(const std::string& bytes)
     }
     out += line.substr(0, first);
     // Each word is v, v/t, v//n or v/t/n: its k-th number indexes counts[k].
+    // Only a number that starts its slot is one: the reader refuses "--2"
+    // or "1-2", and rewriting the "-2" in them would hand it a negative
+    // index it reads (and indexes arrays with: found by fuzzing).
     int slot = 0;
     for (std::size_t i = first; i < line.size();)
     {
       const char c = line[i];
-      if (c == '-' && slot < 3 && i + 1 < line.size() &&
+      const bool starts = i == first || IsSpace(line[i - 1]) || line[i - 1] == '/';
+      if (c == '-' && starts && slot < 3 && i + 1 < line.size() &&
         std::isdigit(static_cast<unsigned char>(line[i + 1])))
       {
         char* after = nullptr;
