@@ -44,9 +44,6 @@ namespace
 constexpr int MaximumTaps = 64;
 // Pixels (of the distance map) on a side of a classification tile.
 constexpr int TileSize = 8;
-// The PCF disc's radius (texels) from which it taps the coarse level, 2x2
-// texels a tap (vtkContactPCFFS.glsl).
-constexpr float CoarseReach = 4.0f;
 
 // Taps (x, y in [-1,1], weight) with x and y scaled to a kernel `size`
 // pixels wide and, when `round`, rounded to whole pixels as the shaders
@@ -639,7 +636,6 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
       {
         program->SetUniformi("contactMaximumKernel", this->MaximumKernelSize);
         program->SetUniformi("contactCoarse", coarse->GetTextureUnit());
-        program->SetUniformf("contactCoarseReach", CoarseReach);
       },
       chainCodes);
     coarse->Deactivate();
