@@ -491,6 +491,32 @@ void vtkShadowMapManager::SetFrustumUniforms(vtkShaderProgram* program, const st
 }
 
 //------------------------------------------------------------------------------
+void vtkShadowMapManager::SetViewFrustumUniforms(vtkShaderProgram* program,
+  const std::string& prefix, const std::string& index, const Frustum& frustum, int mapSize,
+  double texels, const glm::dmat4& viewToWorld)
+{
+  // Composed in double: one rounding to float.
+  const glm::dmat4 worldToView = glm::inverse(viewToWorld);
+  const glm::dmat4 viewToMap = frustum.WorldToMap * viewToWorld;
+  const glm::dvec4 light = worldToView *
+    (frustum.Parallel ? glm::dvec4(-frustum.Direction, 0.0) : glm::dvec4(frustum.Eye, 1.0));
+  // A texel's size at p is x + y * dot(p - eye, axis) over mapSize.
+  const glm::dvec3 axis(worldToView * glm::dvec4(frustum.Direction, 0.0));
+  const glm::dvec3 eye(worldToView * glm::dvec4(frustum.Eye, 1.0));
+  const double scale = texels / mapSize;
+  const glm::dvec4 offset(scale * frustum.Footprint.y * axis,
+    scale * (frustum.Footprint.x - frustum.Footprint.y * glm::dot(axis, eye)));
+
+  const glm::mat4 viewToMapF(viewToMap);
+  const glm::vec4 lightF(light), offsetF(offset);
+  auto name = [&](const char* what) { return prefix + what + index; };
+  program->SetUniformMatrix4x4(
+    name("ViewToMap").c_str(), const_cast<float*>(glm::value_ptr(viewToMapF)));
+  program->SetUniform4f(name("LightVC").c_str(), glm::value_ptr(lightF));
+  program->SetUniform4f(name("OffsetVC").c_str(), glm::value_ptr(offsetF));
+}
+
+//------------------------------------------------------------------------------
 void vtkShadowMapManager::SetCubeUniforms(vtkShaderProgram* program, const std::string& prefix,
   const std::string& index, const std::array<Frustum, 6>& faces, bool packed)
 {

@@ -240,6 +240,16 @@ public:
     const std::string& index, const Frustum& frustum, int mapSize);
 
   /**
+   * The same for receivers' lookups from the camera's view coordinates,
+   * whose `viewToWorld` is given, with an offset of `texels` texels
+   * (vtkShadowOffsetInMap, vtkShadowNormalOffsetFS.glsl):
+   * `<prefix>ViewToMap<index>`, `LightVC` and `OffsetVC`.
+   */
+  static void SetViewFrustumUniforms(vtkShaderProgram* program, const std::string& prefix,
+    const std::string& index, const Frustum& frustum, int mapSize, double texels,
+    const glm::dmat4& viewToWorld);
+
+  /**
    * Upload what shaders need of a cube map for vtkShadowCubeLookupFS.glsl:
    * `<prefix>CubeCenter<index>` (the light, the faces' common eye) and
    * `<prefix>CubeRange<index>` (0 for a float map; far^2 of `faces` when

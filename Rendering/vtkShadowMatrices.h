@@ -10,10 +10,12 @@
 #ifndef vtkShadowMatrices_h
 #define vtkShadowMatrices_h
 
+#include "vtkCamera.h"
 #include "vtkMatrix4x4.h"
 
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
 
 #include <cmath>
 
@@ -30,6 +32,12 @@ inline glm::dmat4 FromVTK(vtkMatrix4x4* m)
     }
   }
   return result;
+}
+
+/// The camera's view to world matrix.
+inline glm::dmat4 ViewToWorld(vtkCamera* camera)
+{
+  return glm::inverse(FromVTK(camera->GetModelViewTransformMatrix()));
 }
 
 inline void ToVTK(const glm::dmat4& m, vtkMatrix4x4* result)

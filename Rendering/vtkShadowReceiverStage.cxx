@@ -3,9 +3,11 @@
 #include "vtkShadowReceiverStage.h"
 
 #include "vtkAbstractMapper.h"
+#include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkShadowMapManager.h"
 #include "vtkShadowMapperCode.h"
+#include "vtkShadowMatrices.h"
 #include "vtkShadowScreenBuffers.h"
 #include "vtkTextureObject.h"
 
@@ -211,8 +213,10 @@ void vtkShadowReceiverStage::SetUniforms(vtkShaderProgram* program, vtkProp* pro
   const Frame& frame = this->Current;
   // Only programs with the shadow term; a visibility that does not depend
   // on the position (or only in the shadow-only view) may have left
-  // vtkShadowViewToWorld unused.
+  // vtkShadowViewToWorld unused, and lookups from view coordinates leave it
+  // unused.
   bool receiver = program->IsUniformUsed("vtkShadowViewToWorld") ||
+    program->IsUniformUsed("vtkShadowViewToMap[0]") ||
     program->IsUniformUsed("vtkShadowAttenuation[0]");
   for (const auto& texture : frame.Code.Textures)
   {
@@ -222,7 +226,9 @@ void vtkShadowReceiverStage::SetUniforms(vtkShaderProgram* program, vtkProp* pro
   {
     return;
   }
-  SetViewToWorld(program, frame.Maps->GetRenderer());
+  vtkRenderer* renderer = frame.Maps->GetRenderer();
+  SetViewToWorld(program, renderer);
+  const glm::dmat4 viewToWorld = vtkShadowMatrices::ViewToWorld(renderer->GetActiveCamera());
   program->SetUniformf("vtkShadowMapTexel", 1.0f / static_cast<float>(frame.MapSize));
   vtkShadowMapManager::SetLookupUniforms(
     program, "vtkShadow", frame.MapSize, frame.NormalBias, frame.DistanceBias);
@@ -242,8 +248,10 @@ void vtkShadowReceiverStage::SetUniforms(vtkShaderProgram* program, vtkProp* pro
         "[" + std::to_string(light.MapIndex) + "]", light.Faces, frame.PackedCubeMaps);
       continue;
     }
-    vtkShadowMapManager::SetFrustumUniforms(
-      program, "vtkShadow", "[" + std::to_string(i) + "]", light.Map, frame.MapSize);
+    const std::string index = "[" + std::to_string(i) + "]";
+    vtkShadowMapManager::SetFrustumUniforms(program, "vtkShadow", index, light.Map, frame.MapSize);
+    vtkShadowMapManager::SetViewFrustumUniforms(
+      program, "vtkShadow", index, light.Map, frame.MapSize, frame.NormalBias, viewToWorld);
     if (light.DepthMap) // techniques with maps of their own may not draw it
     {
       program->SetUniformi(

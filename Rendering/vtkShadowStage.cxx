@@ -19,8 +19,7 @@ vtkShadowStage::~vtkShadowStage() = default;
 //------------------------------------------------------------------------------
 void vtkShadowStage::SetViewToWorld(vtkShaderProgram* program, vtkRenderer* renderer)
 {
-  glm::mat4 viewToWorld(glm::inverse(
-    vtkShadowMatrices::FromVTK(renderer->GetActiveCamera()->GetModelViewTransformMatrix())));
+  glm::mat4 viewToWorld(vtkShadowMatrices::ViewToWorld(renderer->GetActiveCamera()));
   program->SetUniformMatrix4x4("vtkShadowViewToWorld", glm::value_ptr(viewToWorld));
 }
 
@@ -29,13 +28,18 @@ std::string vtkShadowShaderSources::GetSurfaceCode() const
 {
   const bool computed = this->Fragment.find("vec4 vertexVC") != std::string::npos;
   const bool shaded = this->Fragment.find("normalVCVSOutput") != std::string::npos;
-  return std::string("  vec4 vtkShadowPositionWC;\n"
-                     "  vec3 vtkShadowNormalWC;\n"
-                     "  bool vtkShadowFaceDefined = vtkShadowSurface(") +
-    (computed ? "vertexVC.xyz" : "vertexVCVSOutput.xyz") + ", " +
+  // What a stage does not read, the compiler drops.
+  return std::string("  vec3 vtkShadowPositionVC = ") +
+    (computed ? "vertexVC.xyz" : "vertexVCVSOutput.xyz") +
+    ";\n"
+    "  vec3 vtkShadowFaceVC;\n"
+    "  bool vtkShadowFaceDefined = vtkShadowFace(vtkShadowPositionVC, " +
     (shaded ? "normalVCVSOutput" : "vec3(0.0, 0.0, 1.0)") + ", " +
     (vtkShadowMapperCode::MovesDepthOnly(this->Fragment) ? "true" : "false") +
-    ", vtkShadowPositionWC, vtkShadowNormalWC);\n";
+    ", vtkShadowFaceVC);\n"
+    "  vec3 vtkShadowNormalVC = normalize(vtkShadowFaceVC);\n"
+    "  vec4 vtkShadowPositionWC = vtkShadowViewToWorld * vec4(vtkShadowPositionVC, 1.0);\n"
+    "  vec3 vtkShadowNormalWC = normalize(mat3(vtkShadowViewToWorld) * vtkShadowFaceVC);\n";
 }
 
 //------------------------------------------------------------------------------

@@ -72,7 +72,9 @@ public:
 
   /**
    * Statements giving each lit fragment's surface (vtkShadowSurfaceFS.glsl:
-   * `vtkShadowPositionWC`, `vtkShadowNormalWC`, `vtkShadowFaceDefined`), as
+   * `vtkShadowPositionWC`, `vtkShadowNormalWC` (unit), the same in view
+   * coordinates `vtkShadowPositionVC` (vec3), `vtkShadowNormalVC`, and
+   * `vtkShadowFaceDefined`), as
    * the camera pass and the receivers' visibility see it: from the
    * fragment's view-space position, which sphere and stick imposters compute
    * in the fragment shader, and its shading normal.

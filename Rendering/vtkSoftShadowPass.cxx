@@ -577,8 +577,8 @@ std::string vtkSoftShadowPass::GetHardLookupExpression(int slot, const std::stri
       "vtkShadowDistanceBias, vtkShadowCubeRange[" +
       m + "], vtkShadowPCFRadius)";
   }
-  return "vtkShadowLookup(" + map + ", vtkShadowWorldToMap[" + i + "], vtkShadowReceiver(" + i +
-    ", vtkShadowPositionWC, vtkShadowNormalWC), vtkShadowPCFRadius)";
+  return "vtkShadowReceiverLookup(" + map + ", " + i +
+    ", vtkShadowPositionVC, vtkShadowNormalVC, vtkShadowPCFRadius)";
 }
 
 //------------------------------------------------------------------------------

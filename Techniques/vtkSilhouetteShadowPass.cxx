@@ -415,16 +415,13 @@ std::string vtkSilhouetteShadowPass::GetVisibility(int slot) const
       ", silhouetteLookup" + i + ", " + center + ", vtkShadowPositionWC, vtkShadowNormalWC, " + i +
       ", " + soft + ")";
   }
-  const std::string receiver =
-    "vtkShadowReceiver(" + i + ", vtkShadowPositionWC, vtkShadowNormalWC)";
+  const std::string receiver = "vtkShadowPositionVC, vtkShadowNormalVC, " + i;
   if (this->DebugView)
   {
-    return "silhouetteDebug(silhouetteDistances" + i + ", vtkShadowWorldToMap[" + i + "], " +
-      receiver + ", " + i + ")";
+    return "silhouetteDebug(silhouetteDistances" + i + ", " + receiver + ")";
   }
   return "silhouetteVisibility(vtkShadowMap[" + m + "], silhouetteDistances" + i +
-    ", silhouetteLookup" + i + ", vtkShadowWorldToMap[" + i + "], " + receiver + ", " + i + ", " +
-    soft + ")";
+    ", silhouetteLookup" + i + ", " + receiver + ", " + soft + ")";
 }
 
 //------------------------------------------------------------------------------

@@ -26,6 +26,26 @@ vec4 vtkShadowNormalOffset(
   return vec4(positionWC.xyz + toLight * (texel * texels / facing), 1.0);
 }
 
+// vtkShadowNormalOffset() then vtkShadowInMap(), on a point in the camera's
+// view coordinates, as the receivers' fragments have them: no transform to
+// the world and back, no branch on the light's type, and what is constant
+// per light folded into its uniforms (docs/benchmarks.md).
+// light: towards the light, the map's eye (w = 1) or the direction to a
+// parallel map's light (w = 0); offset: the offset before its
+// 1 / cos(theta) is dot(positionVC, xyz) + w (`texels` times a texel's size
+// there).
+bool vtkShadowOffsetInMap(mat4 viewToMap, vec4 light, vec4 offset, vec3 positionVC,
+  vec3 normalVC, out vec3 map)
+{
+  vec3 toLight = light.xyz - positionVC * light.w; // not unit for a spot light
+  // offset / max(cos(theta), 1/4), over |toLight| for moving along it.
+  float along = (dot(positionVC, offset.xyz) + offset.w) /
+    max(abs(dot(normalVC, toLight)), 0.25 * sqrt(dot(toLight, toLight)));
+  vec4 p = viewToMap * vec4(positionVC + along * toLight, 1.0);
+  map = p.xyz / p.w;
+  return p.w > 0.0 && all(greaterThanEqual(map, vec3(0.0))) && all(lessThanEqual(map, vec3(1.0)));
+}
+
 // The map coordinates ([0,1]^3) of a world point in `map`, and whether the
 // point lies in the map's frustum (in front of its eye, inside its bounds):
 // what lies outside is lit.

@@ -15,6 +15,10 @@ uniform float vtkShadowAttenuation[VTK_SHADOW_LIGHTS];
 uniform vec4 vtkShadowEye[VTK_SHADOW_LIGHTS];
 uniform vec3 vtkShadowAxis[VTK_SHADOW_LIGHTS];
 uniform vec2 vtkShadowFootprint[VTK_SHADOW_LIGHTS];
+// The same in the camera's view coordinates (vtkShadowOffsetInMap()).
+uniform mat4 vtkShadowViewToMap[VTK_SHADOW_LIGHTS];
+uniform vec4 vtkShadowLightVC[VTK_SHADOW_LIGHTS];
+uniform vec4 vtkShadowOffsetVC[VTK_SHADOW_LIGHTS];
 uniform float vtkShadowMapTexel;
 uniform float vtkShadowNormalBias;
 // Constants, not uniforms: llvmpipe runs a loop's body once with every lane
@@ -30,22 +34,26 @@ vec4 vtkShadowReceiver(int i, vec4 positionWC, vec3 normalWC)
     vtkShadowFootprint[i], vtkShadowNormalBias);
 }
 
+// Light i's map coordinates where a receiver at a view-space point looks
+// its map up (vtkShadowReceiver(), then the map's projection), and whether
+// they lie in the map.
+bool vtkShadowReceiverInMap(int i, vec3 positionVC, vec3 normalVC, out vec3 map)
+{
+  return vtkShadowOffsetInMap(vtkShadowViewToMap[i], vtkShadowLightVC[i], vtkShadowOffsetVC[i],
+    positionVC, normalVC, map);
+}
+
 // Hard shadow: the fraction of depth comparisons that pass around the
-// point's projection in the light's map, over a (2r+1)^2-texel footprint.
+// point's projection p in the light's map, over a (2r+1)^2-texel footprint.
 // With bilinear comparison (vtkShadowPCFBilinear) the taps sit on texel
 // corners, (2r)^2 of them, each averaging 2x2 texels: the same footprint
-// with tent weights for fewer taps. Outside the map is lit.
+// with tent weights for fewer taps.
 #if VTK_SHADOW_MAPS > 0
 uniform sampler2DShadow vtkShadowMap[VTK_SHADOW_MAPS];
 #endif
 
-float vtkShadowLookup(sampler2DShadow map, mat4 worldToMap, vec4 positionWC, int radius)
+float vtkShadowCompare(sampler2DShadow map, vec3 p, int radius)
 {
-  vec3 p;
-  if (!vtkShadowInMap(worldToMap, positionWC, p))
-  {
-    return 1.0;
-  }
   if (radius == 0)
   {
     return texture(map, p.xyz);
@@ -62,6 +70,20 @@ float vtkShadowLookup(sampler2DShadow map, mat4 worldToMap, vec4 positionWC, int
     }
   }
   return lit / float(taps * taps);
+}
+
+// The hard shadow at a world point (already offset); outside the map is lit.
+float vtkShadowLookup(sampler2DShadow map, mat4 worldToMap, vec4 positionWC, int radius)
+{
+  vec3 p;
+  return vtkShadowInMap(worldToMap, positionWC, p) ? vtkShadowCompare(map, p, radius) : 1.0;
+}
+
+// Light i's hard shadow at a receiver's view-space point and unit normal.
+float vtkShadowReceiverLookup(sampler2DShadow map, int i, vec3 positionVC, vec3 normalVC, int radius)
+{
+  vec3 p;
+  return vtkShadowReceiverInMap(i, positionVC, normalVC, p) ? vtkShadowCompare(map, p, radius) : 1.0;
 }
 
 #if VTK_SHADOW_CUBES > 0

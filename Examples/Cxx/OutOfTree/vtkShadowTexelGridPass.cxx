@@ -22,21 +22,20 @@ bool vtkShadowTexelGridPass::RenderShadowMaps(const vtkRenderState* s)
 vtkSoftShadowPass::ReceiverCode vtkShadowTexelGridPass::GetReceiverCode()
 {
   ReceiverCode code;
-  // After the framework's receiver code: vtkShadowLookup() and
-  // vtkShadowInMap() come from there.
+  // After the framework's receiver code: vtkShadowReceiverInMap() and
+  // vtkShadowCompare() come from there.
   code.Declarations = R"(
 uniform float texelGridContrast;
 
-float vtkTexelGrid(sampler2DShadow map, mat4 worldToMap, vec4 positionWC)
+float vtkTexelGrid(sampler2DShadow map, int i, vec3 positionVC, vec3 normalVC)
 {
-  float lit = vtkShadowLookup(map, worldToMap, positionWC, 0);
   vec3 p;
-  if (!vtkShadowInMap(worldToMap, positionWC, p))
+  if (!vtkShadowReceiverInMap(i, positionVC, normalVC, p))
   {
-    return lit;
+    return 1.0;
   }
   ivec2 texel = ivec2(floor(p.xy * vec2(textureSize(map, 0))));
-  return lit * (1.0 - texelGridContrast * float((texel.x + texel.y) & 1));
+  return vtkShadowCompare(map, p, 0) * (1.0 - texelGridContrast * float((texel.x + texel.y) & 1));
 }
 )";
   code.Visibility = [this](int slot)
@@ -46,10 +45,8 @@ float vtkTexelGrid(sampler2DShadow map, mat4 worldToMap, vec4 positionWC)
     {
       return this->GetDefaultVisibility(slot);
     }
-    const std::string i = std::to_string(slot);
-    return "vtkTexelGrid(vtkShadowMap[" + std::to_string(light.MapIndex) +
-      "], vtkShadowWorldToMap[" + i + "], vtkShadowReceiver(" + i +
-      ", vtkShadowPositionWC, vtkShadowNormalWC))";
+    return "vtkTexelGrid(vtkShadowMap[" + std::to_string(light.MapIndex) + "], " +
+      std::to_string(slot) + ", vtkShadowPositionVC, vtkShadowNormalVC)";
   };
   code.Uniforms = [this](vtkShaderProgram* program)
   { program->SetUniformf("texelGridContrast", static_cast<float>(this->Contrast)); };

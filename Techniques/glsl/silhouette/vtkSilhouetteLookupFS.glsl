@@ -6,9 +6,9 @@
 // silhouette point's depth) and its lookup texture, which holds four
 // segments side by side (eq. 4), each of silhouetteLookupTexels texels, and
 // one row per penumbra width (section 2.2.1; one row for hard shadows).
-// Uses: vtkShadowNormalOffsetFS.glsl (vtkShadowInMap) and
+// Uses: vtkSoftShadowReceiverFS.glsl (vtkShadowReceiverInMap) and
 // vtkShadowCubeLookupFS.glsl (vtkShadowCubeFace, vtkShadowCubeDirection), which
-// the receivers' shader (vtkSoftShadowReceiverFS.glsl) declares before it;
+// the receivers' shader declares before it;
 // vtkSilhouetteCommon.glsl.
 
 uniform vec4 silhouetteDepthRange[VTK_SHADOW_LIGHTS]; // near, far, 1 if parallel, K
@@ -118,15 +118,15 @@ float silhouetteSample(sampler2DShadow map, sampler2D silhouettes, sampler2D loo
   return silhouetteResolve(lookup, edge, p.z, lit == 0.0 ? 1.0 : 0.0, i, soft, width);
 }
 
-// Light i's visibility at a receiver point (already offset, world space).
+// Light i's visibility at a receiver (view-space point and unit normal).
 // Soft: the point and three around it, silhouetteSpread penumbra
 // half-widths away (section 2.2.1), averaged; the lookup's profiles are
 // narrowed to match (vtkSilhouetteShadowPass::BuildLookup).
 float silhouetteVisibility(sampler2DShadow map, sampler2D silhouettes, sampler2D lookup,
-  mat4 worldToMap, vec4 receiverWC, int i, bool soft)
+  vec3 positionVC, vec3 normalVC, int i, bool soft)
 {
   vec3 p;
-  if (!vtkShadowInMap(worldToMap, receiverWC, p))
+  if (!vtkShadowReceiverInMap(i, positionVC, normalVC, p))
   {
     return 1.0;
   }
@@ -227,10 +227,10 @@ float silhouetteCubeDebug(samplerCube silhouettes, vec3 center, vec4 positionWC,
     0.0, 1.0);
 }
 
-float silhouetteDebug(sampler2D silhouettes, mat4 worldToMap, vec4 receiverWC, int i)
+float silhouetteDebug(sampler2D silhouettes, vec3 positionVC, vec3 normalVC, int i)
 {
   vec3 p;
-  if (!vtkShadowInMap(worldToMap, receiverWC, p))
+  if (!vtkShadowReceiverInMap(i, positionVC, normalVC, p))
   {
     return 1.0;
   }
