@@ -61,12 +61,11 @@ bool vtkShadowCameraStage::GetCodeKey(std::string& key) const
 //------------------------------------------------------------------------------
 void vtkShadowCameraStage::SetUniforms(vtkShaderProgram* program, vtkProp*)
 {
-  if (program->IsUniformUsed("vtkShadowViewToWorld"))
+  // Code from view coordinates may leave vtkShadowViewToWorld unused, so
+  // every program gets both (an unused name is a failed lookup, no more).
+  SetViewToWorld(program, this->Renderer);
+  if (this->Code && this->Code->Uniforms)
   {
-    SetViewToWorld(program, this->Renderer);
-    if (this->Code->Uniforms)
-    {
-      this->Code->Uniforms(program);
-    }
+    this->Code->Uniforms(program);
   }
 }

@@ -128,7 +128,7 @@ void vtkShadowReceiverStage::PostReplace(vtkShadowShaderSources& sources)
     impl << sources.GetSurfaceCode();
     if (frame.Screen)
     {
-      impl << "  vtkShadowScreenSetup(vtkShadowPositionWC);\n";
+      impl << "  vtkShadowScreenSetup(vtkShadowPositionVC);\n";
     }
     impl << frame.Code.Setup;
     for (size_t slot = 0; slot < count; ++slot)

@@ -10,6 +10,7 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkShadowMapManager.h"
+#include "vtkShadowMatrices.h"
 #include "vtkShadowSampling.h"
 #include "vtkShadowScreenBuffers.h"
 #include "vtkShadowVTKVersion.h"
@@ -173,7 +174,7 @@ vtkSoftShadowPass::ReceiverCode vtkContactHardeningShadowPass::GetReceiverCode()
     std::string("#define CONTACT_REFINE ") + (refine ? "1\n" : "0\n") + vtkContactUpsampleFS;
   if (refine)
   {
-    code.Setup = "  vtkContactScreenSetup(vtkShadowPositionWC);\n";
+    code.Setup = "  vtkContactScreenSetup(vtkShadowPositionVC);\n";
   }
   code.Visibility = [this, refine](int slot)
   {
@@ -371,7 +372,7 @@ std::string vtkContactHardeningShadowPass::DistanceMapImplementation() const
   const vtkInternals& in = *this->Internals;
   const auto& lights = this->Maps->GetLights();
   std::ostringstream impl;
-  impl << "  vtkContactCameraSetup(vtkShadowPositionWC);\n";
+  impl << "  vtkContactCameraSetup(vtkShadowPositionVC);\n";
   int maps = 0, cubes = 0;
   for (size_t k = 0; k < in.CameraPassUnits.size(); ++k)
   {
@@ -379,15 +380,16 @@ std::string vtkContactHardeningShadowPass::DistanceMapImplementation() const
     impl << "  gl_FragData[" << k << "] = vtkContactDistance(";
     if (light.Point)
     {
-      impl << "contactLightCube[" << cubes++ << "], " << k;
+      impl << "contactLightCube[" << cubes++ << "], " << k
+           << ", vtkShadowPositionWC, vtkShadowNormalWC);\n";
     }
     else
     {
       // Perspective (spot) or parallel (directional) map, compiled in.
       impl << "contactLightDepth[" << maps++ << "], " << k << ", "
-           << (light.Directional ? "false" : "true");
+           << (light.Directional ? "false" : "true")
+           << ", vtkShadowPositionVC, vtkShadowNormalVC);\n";
     }
-    impl << ", vtkShadowPositionWC, vtkShadowNormalWC);\n";
   }
   return impl.str();
 }
@@ -397,6 +399,8 @@ void vtkContactHardeningShadowPass::SetDistanceMapUniforms(vtkShaderProgram* pro
 {
   const vtkInternals& in = *this->Internals;
   const auto& lights = this->Maps->GetLights();
+  const glm::dmat4 viewToWorld =
+    vtkShadowMatrices::ViewToWorld(this->Maps->GetRenderer()->GetActiveCamera());
   int maps = 0, cubes = 0;
   for (size_t k = 0; k < in.CameraPassUnits.size(); ++k)
   {
@@ -413,7 +417,8 @@ void vtkContactHardeningShadowPass::SetDistanceMapUniforms(vtkShaderProgram* pro
     {
       program->SetUniformi(
         ("contactLightDepth[" + std::to_string(maps++) + "]").c_str(), in.CameraPassUnits[k]);
-      vtkShadowMapManager::SetFrustumUniforms(program, "contact", index, light.Map, this->MapSize);
+      vtkShadowMapManager::SetViewFrustumUniforms(
+        program, "contact", index, light.Map, this->MapSize, this->NormalBias, viewToWorld);
       const glm::vec2 range(light.Map.Near, light.Map.Far);
       program->SetUniform2f(("contactDepthRange" + index).c_str(), glm::value_ptr(range));
     }

@@ -140,7 +140,7 @@ float vtkShadowScreenFragment;
 float vtkShadowScreenTolerance;
 uniform vec2 vtkShadowTexelFootprint; // a texel's world size: x + y * camera distance
 
-void vtkShadowScreenSetup(vec4 positionWC)
+void vtkShadowScreenSetup(vec3 positionVC)
 {
   // Clamped to the texel centres at the edges, as bilinear filtering clamps.
   vec2 size = vec2(textureSize(vtkShadowScreen[0], 0));
@@ -151,7 +151,7 @@ void vtkShadowScreenSetup(vec4 positionWC)
   vtkShadowScreenWeights =
     vec4(1.0 - f.x, f.x, 1.0 - f.x, f.x) * vec4(1.0 - f.y, 1.0 - f.y, f.y, f.y) + 1.0e-4;
   // The camera sits at the view-space origin.
-  vtkShadowScreenCameraDistance = distance(positionWC.xyz, vtkShadowViewToWorld[3].xyz);
+  vtkShadowScreenCameraDistance = length(positionVC);
   vtkShadowScreenFragment =
     (log2(vtkShadowScreenCameraDistance) - vtkShadowLogNear) * vtkShadowCodesPerLog + 1.0;
   // 2% (log2(1.02)) and rounding, plus the change of distance over a texel

@@ -18,18 +18,17 @@
 // at most CONTACT_PASS_LIMIT), and per light whether its map is a
 // perspective one. A software rasterizer runs both arms of a branch, even
 // on a uniform, and this code runs on every fragment the camera draws.
-// Uses: vtkShadowSurfaceFS.glsl (vtkShadowViewToWorld), vtkShadowNormalOffsetFS.glsl,
-//   vtkShadowCubeLookupFS.glsl.
+// Uses: vtkShadowNormalOffsetFS.glsl, vtkShadowCubeLookupFS.glsl.
 #if CONTACT_MAPS > 0
 uniform sampler2D contactLightDepth[CONTACT_MAPS];
 #endif
 #if CONTACT_CUBES > 0
 uniform samplerCube contactLightCube[CONTACT_CUBES];
 #endif
-uniform mat4 contactWorldToMap[CONTACT_LIGHTS];
-uniform vec4 contactEye[CONTACT_LIGHTS];
-uniform vec3 contactAxis[CONTACT_LIGHTS];
-uniform vec2 contactFootprint[CONTACT_LIGHTS];
+// Spot and directional maps from view coordinates (vtkShadowOffsetInMap).
+uniform mat4 contactViewToMap[CONTACT_LIGHTS];
+uniform vec4 contactLightVC[CONTACT_LIGHTS];
+uniform vec4 contactOffsetVC[CONTACT_LIGHTS];
 uniform vec2 contactDepthRange[CONTACT_LIGHTS]; // near, far
 uniform vec3 contactCubeCenter[CONTACT_LIGHTS];
 uniform float contactCubeRange[CONTACT_LIGHTS];
@@ -85,10 +84,9 @@ float vtkContactPassesFor(float width)
 float contactCameraDistance;
 float contactPixelsPerLength;
 
-void vtkContactCameraSetup(vec4 positionWC)
+void vtkContactCameraSetup(vec3 positionVC)
 {
-  vec3 camera = vtkShadowViewToWorld[3].xyz;
-  contactCameraDistance = distance(positionWC.xyz, camera);
+  contactCameraDistance = length(positionVC); // the camera is the view's origin
 #if CONTACT_LIGHT_SIZE
   // The penumbra's width in pixels where it lies across the view; the
   // filters lay their kernels on the receiver (vtkContactSurfaceDistance2),
@@ -124,12 +122,11 @@ vec4 vtkContactLit()
 }
 
 #if CONTACT_MAPS > 0
-vec4 vtkContactDistance(sampler2D map, int k, bool perspective, vec4 positionWC, vec3 normal)
+vec4 vtkContactDistance(sampler2D map, int k, bool perspective, vec3 positionVC, vec3 normalVC)
 {
-  vec4 receiver = vtkShadowNormalOffset(
-    positionWC, normal, contactEye[k], contactAxis[k], contactFootprint[k], contactNormalBias);
   vec3 p;
-  if (!vtkShadowInMap(contactWorldToMap[k], receiver, p))
+  if (!vtkShadowOffsetInMap(
+        contactViewToMap[k], contactLightVC[k], contactOffsetVC[k], positionVC, normalVC, p))
   {
     return vtkContactLit();
   }

@@ -15,12 +15,12 @@ float vtkContactUnresolved;   // share of the last lookup to refine, 0 to 1
 float vtkContactRadius;       // the penumbra's half width there, world
 
 // Once a fragment, after vtkShadowScreenSetup().
-void vtkContactScreenSetup(vec4 positionWC)
+void vtkContactScreenSetup(vec3 positionVC)
 {
   vtkContactTexelSize =
     vtkShadowTexelFootprint.x + vtkShadowTexelFootprint.y * vtkShadowScreenCameraDistance;
-  vec3 stepX = dFdx(positionWC.xyz) / vtkShadowScreenScale.x;
-  vec3 stepY = dFdy(positionWC.xyz) / vtkShadowScreenScale.y;
+  vec3 stepX = dFdx(positionVC) / vtkShadowScreenScale.x;
+  vec3 stepY = dFdy(positionVC) / vtkShadowScreenScale.y;
   vtkContactLongestStep2 = max(dot(stepX, stepX), dot(stepY, stepY));
 }
 #endif
