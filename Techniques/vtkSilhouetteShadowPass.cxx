@@ -105,6 +105,9 @@ struct vtkSilhouetteShadowPass::Internals
     float Range[4] = { 0.0f, 1.0f, 0.0f, 0.0f }; ///< near, far, parallel, K
     float HalfWidth = 1.0f;                      ///< W: distances kept within it
     float MaximumPenumbra = 1.0f;                ///< Wmax
+    /// The receivers' multiply-adds (vtkSilhouetteLookupFS.glsl): half-width
+    /// per unit of map depth, 0.5 / W, rows per texel of width, first row.
+    float LookupScale[4] = { 0.0f, 0.5f, 0.0f, 0.5f };
     /// The lookup table (Section 2.2.2's falloff across the band) and what
     /// it was built for.
     vtkSmartPointer<vtkTextureObject> Lookup;
@@ -260,6 +263,17 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
       ? this->ExpectedWidth
       : 2.0 * std::max<double>(soft ? band.MaximumPenumbra : 0.0, 1.0);
     band.HalfWidth = static_cast<float>(0.5 * expected + Diagonal);
+    // K (r - e) for a parallel map, whose depth is (r - near) / (far -
+    // near); K (1 / e - 1 / r) for a perspective one, whose depth is
+    // (1 / near - 1 / r) / (1 / near - 1 / far): either is the depths'
+    // difference times a constant.
+    const int rows = soft ? this->LookupRows : 1;
+    band.LookupScale[0] =
+      static_cast<float>(frustum.Parallel ? k * (frustum.Far - frustum.Near)
+                                          : k * (1.0 / frustum.Near - 1.0 / frustum.Far));
+    band.LookupScale[1] = static_cast<float>(0.5 / band.HalfWidth);
+    band.LookupScale[2] = static_cast<float>((rows - 1.0) / (rows * double(band.MaximumPenumbra)));
+    band.LookupScale[3] = static_cast<float>(0.5 / rows);
 
     // The slot's silhouette map, and its lookup, built again when its band changed.
     vtkShadowTextureSpec spec;
@@ -267,7 +281,6 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
     spec.Cube = light.Point;
     spec.Linear = true;
     vtkTextureObject* distances = this->Maps->GetTexture(light, 0, spec);
-    const int rows = soft ? this->LookupRows : 1;
     const double spread = soft ? this->SampleSpread : 0.0;
     const std::vector<double> key = { static_cast<double>(this->LookupTexels),
       static_cast<double>(rows), band.HalfWidth, band.MaximumPenumbra, this->EdgeWidth, spread };
@@ -386,12 +399,14 @@ vtkSoftShadowPass::ReceiverCode vtkSilhouetteShadowPass::GetReceiverCode()
       program->SetUniform4f(("silhouetteDepthRange" + i).c_str(), bands[slot].Range);
       const float band[2] = { bands[slot].HalfWidth, bands[slot].MaximumPenumbra };
       program->SetUniform2f(("silhouetteBand" + i).c_str(), band);
+      program->SetUniform4f(("silhouetteLookupScale" + i).c_str(), bands[slot].LookupScale);
     }
     program->SetUniformf("silhouetteMapSize", static_cast<float>(this->MapSize));
     program->SetUniformf("silhouetteSpread", static_cast<float>(this->SampleSpread));
-    const float texels[2] = { static_cast<float>(this->LookupTexels),
-      static_cast<float>(this->Variant == Soft ? this->LookupRows : 1) };
-    program->SetUniform2f("silhouetteLookupTexels", texels);
+    const double texels = this->LookupTexels;
+    const float segment[2] = { static_cast<float>((texels - 1.0) / (4.0 * texels)),
+      static_cast<float>(0.125 / texels) };
+    program->SetUniform2f("silhouetteLookupSegment", segment);
   };
   return code;
 }

@@ -4,7 +4,7 @@
 // 2.2): a light's depth map, its silhouette map (signed distance to the
 // nearest silhouette in texels, positive on the occluder's side, and that
 // silhouette point's depth) and its lookup texture, which holds four
-// segments side by side (eq. 4), each of silhouetteLookupTexels texels, and
+// segments side by side (eq. 4), each of LookupTexels texels, and
 // one row per penumbra width (section 2.2.1; one row for hard shadows).
 // Uses: vtkSoftShadowReceiverFS.glsl (vtkShadowReceiverInMap) and
 // vtkShadowCubeLookupFS.glsl (vtkShadowCubeFace, vtkShadowCubeDirection), which
@@ -13,41 +13,37 @@
 
 uniform vec4 silhouetteDepthRange[VTK_SHADOW_LIGHTS]; // near, far, 1 if parallel, K
 uniform vec2 silhouetteBand[VTK_SHADOW_LIGHTS]; // W: distances span [-W, W]; Wmax: widest penumbra
+// Per light, what eq. 4's lookup needs as multiply-adds: x, the penumbra's
+// half-width in texels per unit of map depth between silhouette and
+// receiver (0 for hard shadows); y, the distance's scale 0.5 / W; z, a
+// row per texel of width; w, the first row's centre.
+uniform vec4 silhouetteLookupScale[VTK_SHADOW_LIGHTS];
 uniform float silhouetteMapSize;
 uniform float silhouetteSpread;     // the three outer samples' distance, in penumbra half-widths
-uniform vec2 silhouetteLookupTexels; // texels per segment, rows
+uniform vec2 silhouetteLookupSegment; // a segment's scale and first centre, T texels each: (T - 1) / 4T, 1 / 8T
 // Where section 2.2.1's three outer samples lie, in units of their reach.
 const vec2 silhouetteAround[3] = vec2[3](vec2(0.0, 1.0), vec2(-0.8660254, -0.5), vec2(0.8660254, -0.5));
 
-// The penumbra's half-width in texels at a receiver of map depth z behind a
-// silhouette of map depth edge: K (r - e) for a directional light's angular
-// size, K (r - e) / (e r) for a spot light's radius.
-float silhouettePenumbra(vec4 range, float edge, float z)
-{
-  float e = silhouetteLinearDepth(range, edge);
-  float r = silhouetteLinearDepth(range, z);
-  float w = range.w * max(r - e, 0.0);
-  return range.z > 0.0 ? w : w / max(e * r, 1.0e-20);
-}
-
 // Eq. 4 and, for soft shadows, the row of the penumbra's width: the
 // visibility of a sample given its distance and silhouette depth (edge), its
-// own depth z and the shadow map's verdict (occluded: z_O < z).
+// own depth z and the shadow map's verdict (occluded: z_O < z). The
+// penumbra's half-width is K (r - e) behind a directional light's angular
+// size and K (r - e) / (e r) behind a spot light's radius, with r and e the
+// distances along the light's axis; both are proportional to the map depths'
+// difference (for a perspective map 1 / e - 1 / r is), so one scale per
+// light serves (vtkSilhouetteShadowPass::GetReceiverCode).
 float silhouetteResolve(sampler2D lookup, vec2 edge, float z, float occluded, int i, bool soft,
   out float width)
 {
+  vec4 scale = silhouetteLookupScale[i];
   float inFront = edge.y < z ? 1.0 : 0.0; // z_E < z
   // The distance term inset so that filtering never mixes two segments.
-  float d = clamp(0.5 + 0.5 * edge.x / silhouetteBand[i].x, 0.0, 1.0);
-  d = (0.5 + d * (silhouetteLookupTexels.x - 1.0)) / silhouetteLookupTexels.x;
-  float coord = 0.25 * (d + occluded) + 0.5 * inFront; // eq. 4
+  float d = clamp(edge.x * scale.y + 0.5, 0.0, 1.0);
+  float coord = d * silhouetteLookupSegment.x +
+    (silhouetteLookupSegment.y + 0.25 * occluded + 0.5 * inFront); // eq. 4
   // The penumbra's half-width, clamped to the widest the lookup holds.
-  width = soft && inFront > 0.0
-    ? min(silhouettePenumbra(silhouetteDepthRange[i], edge.y, z), silhouetteBand[i].y)
-    : 0.0;
-  float row = width / silhouetteBand[i].y;
-  row = (0.5 + row * (silhouetteLookupTexels.y - 1.0)) / silhouetteLookupTexels.y;
-  return texture(lookup, vec2(coord, row)).r;
+  width = soft && inFront > 0.0 ? min(scale.x * (z - edge.y), silhouetteBand[i].y) : 0.0;
+  return texture(lookup, vec2(coord, width * scale.z + scale.w)).r;
 }
 
 // A sample's distance from the four silhouette-map texels around it (d4,
@@ -63,8 +59,8 @@ float silhouetteResolve(sampler2D lookup, vec2 edge, float z, float occluded, in
 // sample to be in a penumbra's inner half; zero when no test is needed.
 vec2 silhouetteEdge(vec4 d4, vec4 z4, vec2 f, float lit, int i, out vec2 across)
 {
-  vec4 z = mix(vec4(1.0), z4, vec4(greaterThan(d4, vec4(-2.0 * silhouetteBand[i].x))));
-  vec2 edge = vec2(mix(mix(d4.w, d4.z, f.x), mix(d4.x, d4.y, f.x), f.y), min(min(z.x, z.y), min(z.z, z.w)));
+  // Texels without a silhouette hold depth 1, the map's clear value.
+  vec2 edge = vec2(mix(mix(d4.w, d4.z, f.x), mix(d4.x, d4.y, f.x), f.y), min(min(z4.x, z4.y), min(z4.z, z4.w)));
   across = vec2(0.0);
   if (lit == 4.0)
   {
