@@ -46,21 +46,26 @@ float silhouetteResolve(sampler2D lookup, vec2 edge, float z, float occluded, in
   return texture(lookup, vec2(coord, width * scale.z + scale.w)).r;
 }
 
+// The silhouette's depth at a sample from the four texels around it: the
+// nearest, texels without a silhouette holding 1 (the map's clear value).
+// Filtering depths with empty texels would move them, badly so in a point
+// light's depth range.
+float silhouetteDepth(vec4 z4)
+{
+  return min(min(z4.x, z4.y), min(z4.z, z4.w));
+}
+
 // A sample's distance from the four silhouette-map texels around it (d4,
-// gather order (0,1), (1,1), (1,0), (0,0); f: the position between them)
-// and their silhouette depths z4 (the sample's is the nearest among texels
-// that have a silhouette: filtering depths with empty texels would move
-// them, badly so in a point light's depth range), given how many of the four depth-map texels
-// see it (lit). The shadow map's verdict is all four occluded: a shadow
+// gather order (0,1), (1,1), (1,0), (0,0); f: the position between them),
+// given how many of the four depth-map texels see it (lit). The shadow map's verdict is all four occluded: a shadow
 // shrunk by up to a texel, which is the paper's offset between the two
 // boundaries (section 2.2), made on the shadow map's side so that the
 // silhouette's edge stays where the geometry puts it. `across` returns
 // where (texels from the sample) the depth map must show the light for the
 // sample to be in a penumbra's inner half; zero when no test is needed.
-vec2 silhouetteEdge(vec4 d4, vec4 z4, vec2 f, float lit, int i, out vec2 across)
+float silhouetteEdge(vec4 d4, vec2 f, float lit, int i, out vec2 across)
 {
-  // Texels without a silhouette hold depth 1, the map's clear value.
-  vec2 edge = vec2(mix(mix(d4.w, d4.z, f.x), mix(d4.x, d4.y, f.x), f.y), min(min(z4.x, z4.y), min(z4.z, z4.w)));
+  float edge = mix(mix(d4.w, d4.z, f.x), mix(d4.x, d4.y, f.x), f.y);
   across = vec2(0.0);
   if (lit == 4.0)
   {
@@ -69,15 +74,15 @@ vec2 silhouetteEdge(vec4 d4, vec4 z4, vec2 f, float lit, int i, out vec2 across)
     // occluder (a surface beside its own border or silhouette), which does
     // not shadow itself. (Within a shadow's true edge, one of the four is
     // occluded.)
-    edge.x = edge.x > 0.0 ? -silhouetteBand[i].x : edge.x;
+    edge = edge > 0.0 ? -silhouetteBand[i].x : edge;
   }
-  else if (lit == 0.0 && edge.x > 0.0 && all(greaterThan(d4, vec4(-silhouetteBand[i].x))))
+  else if (lit == 0.0 && edge > 0.0 && all(greaterThan(d4, vec4(-silhouetteBand[i].x))))
   {
     // In the shadow map's shadow, on the occluder's side: the inner half of
     // a penumbra only if the light shows past the silhouette. Across an
     // inner fold (a bump in front of more of the occluder) it does not.
     vec2 gradient = vec2(mix(d4.z - d4.w, d4.y - d4.x, f.y), mix(d4.x - d4.w, d4.y - d4.z, f.x));
-    across = -gradient / max(length(gradient), 1.0e-6) * (edge.x + 1.5);
+    across = -gradient / max(length(gradient), 1.0e-6) * (edge + 1.5);
   }
   return edge;
 }
@@ -91,10 +96,16 @@ bool silhouetteNone(vec4 d4, int i)
   return all(lessThanEqual(d4, vec4(-2.0 * silhouetteBand[i].x)));
 }
 
+// Section 2.2.1's three outer samples smooth the point's own penumbra: they
+// take its silhouette's depth (`own` false) rather than gather their own,
+// which spares a third of a soft sample's texture reads and leaves the
+// error against the ray-cast truth as it was (docs/benchmarks.md).
+
 #if VTK_SHADOW_MAPS > 0
-// One sample at map point p of a spot or directional light.
+// One sample at map point p of a spot or directional light; `depth`, its
+// silhouette's depth, found if `own`, else given.
 float silhouetteSample(sampler2DShadow map, sampler2D silhouettes, sampler2D lookup, vec3 p,
-  int i, bool soft, out float width)
+  int i, bool soft, bool own, inout float depth, out float width)
 {
   float lit = dot(textureGather(map, p.xy, p.z), vec4(1.0));
   vec4 d4 = textureGather(silhouettes, p.xy, 0);
@@ -105,7 +116,11 @@ float silhouetteSample(sampler2DShadow map, sampler2D silhouettes, sampler2D loo
   }
   vec2 f = fract(p.xy * silhouetteMapSize - 0.5);
   vec2 across;
-  vec2 edge = silhouetteEdge(d4, textureGather(silhouettes, p.xy, 1), f, lit, i, across);
+  if (own)
+  {
+    depth = silhouetteDepth(textureGather(silhouettes, p.xy, 1));
+  }
+  vec2 edge = vec2(silhouetteEdge(d4, f, lit, i, across), depth);
   if (across != vec2(0.0) &&
     dot(textureGather(map, p.xy + across / silhouetteMapSize, p.z), vec4(1.0)) == 0.0)
   {
@@ -126,8 +141,9 @@ float silhouetteVisibility(sampler2DShadow map, sampler2D silhouettes, sampler2D
   {
     return 1.0;
   }
+  float depth = 1.0;
   float width;
-  float visibility = silhouetteSample(map, silhouettes, lookup, p, i, soft, width);
+  float visibility = silhouetteSample(map, silhouettes, lookup, p, i, soft, true, depth, width);
   if (!soft)
   {
     return visibility;
@@ -136,8 +152,8 @@ float silhouetteVisibility(sampler2DShadow map, sampler2D silhouettes, sampler2D
   for (int k = 0; k < 3; ++k)
   {
     float unused;
-    visibility += silhouetteSample(
-      map, silhouettes, lookup, vec3(p.xy + reach * silhouetteAround[k], p.z), i, soft, unused);
+    visibility += silhouetteSample(map, silhouettes, lookup,
+      vec3(p.xy + reach * silhouetteAround[k], p.z), i, soft, false, depth, unused);
   }
   return 0.25 * visibility;
 }
@@ -149,7 +165,7 @@ float silhouetteVisibility(sampler2DShadow map, sampler2D silhouettes, sampler2D
 // depth maps are the framework's squared distances, the silhouette cube
 // holds each face's distances and depths.
 float silhouetteCubeSample(samplerCube distances, samplerCube silhouettes, sampler2D lookup,
-  vec3 v, float reference, int i, bool soft, out float width)
+  vec3 v, float reference, int i, bool soft, bool own, inout float depth, out float width)
 {
   vec3 s, t;
   float axis;
@@ -163,8 +179,11 @@ float silhouetteCubeSample(samplerCube distances, samplerCube silhouettes, sampl
     return 0.25 * lit;
   }
   vec2 across;
-  vec2 edge =
-    silhouetteEdge(d4, textureGather(silhouettes, v, 1), fract(st - 0.5), lit, i, across);
+  if (own)
+  {
+    depth = silhouetteDepth(textureGather(silhouettes, v, 1));
+  }
+  vec2 edge = vec2(silhouetteEdge(d4, fract(st - 0.5), lit, i, across), depth);
   // Texels of this face as a direction: 2 / size of the axis distance each.
   vec3 step = v + (across.x * s + across.y * t) * (2.0 * axis / silhouetteMapSize);
   if (across != vec2(0.0) &&
@@ -186,9 +205,10 @@ float silhouetteCubeVisibility(samplerCube distances, samplerCube silhouettes, s
   vec3 v = vtkShadowCubeDirection(
     center, positionWC, normalWC, vtkShadowCubeTexel, vtkShadowNormalBias, size);
   float reference = dot(v, v) * vtkShadowDistanceBias;
+  float depth = 1.0;
   float width;
-  float visibility =
-    silhouetteCubeSample(distances, silhouettes, lookup, v, reference, i, soft, width);
+  float visibility = silhouetteCubeSample(
+    distances, silhouettes, lookup, v, reference, i, soft, true, depth, width);
   if (!soft)
   {
     return visibility;
@@ -209,7 +229,7 @@ float silhouetteCubeVisibility(samplerCube distances, samplerCube silhouettes, s
     float along = dot(normalWC, around);
     around *= along * facing > 1.0e-12 * dot(around, around) ? facing / along : 1.0;
     visibility += silhouetteCubeSample(distances, silhouettes, lookup, around,
-      dot(around, around) * vtkShadowDistanceBias, i, soft, unused);
+      dot(around, around) * vtkShadowDistanceBias, i, soft, false, depth, unused);
   }
   return 0.25 * visibility;
 }
