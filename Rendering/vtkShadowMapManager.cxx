@@ -491,13 +491,9 @@ void vtkShadowMapManager::SetFrustumUniforms(vtkShaderProgram* program, const st
 }
 
 //------------------------------------------------------------------------------
-void vtkShadowMapManager::SetViewFrustumUniforms(vtkShaderProgram* program,
-  const std::string& prefix, const std::string& index, const Frustum& frustum, int mapSize,
-  double texels, const glm::dmat4& viewToWorld)
+vtkShadowMapManager::ViewLookup vtkShadowMapManager::GetViewLookup(const Frustum& frustum,
+  int mapSize, double texels, const glm::dmat4& viewToWorld, const glm::dmat4& worldToView)
 {
-  // Composed in double: one rounding to float.
-  const glm::dmat4 worldToView = glm::inverse(viewToWorld);
-  const glm::dmat4 viewToMap = frustum.WorldToMap * viewToWorld;
   const glm::dvec4 light = worldToView *
     (frustum.Parallel ? glm::dvec4(-frustum.Direction, 0.0) : glm::dvec4(frustum.Eye, 1.0));
   // A texel's size at p is x + y * dot(p - eye, axis) over mapSize.
@@ -506,14 +502,22 @@ void vtkShadowMapManager::SetViewFrustumUniforms(vtkShaderProgram* program,
   const double scale = texels / mapSize;
   const glm::dvec4 offset(scale * frustum.Footprint.y * axis,
     scale * (frustum.Footprint.x - frustum.Footprint.y * glm::dot(axis, eye)));
+  ViewLookup lookup;
+  lookup.ViewToMap = glm::mat4(frustum.WorldToMap * viewToWorld);
+  lookup.Light = glm::vec4(light);
+  lookup.Offset = glm::vec4(offset);
+  return lookup;
+}
 
-  const glm::mat4 viewToMapF(viewToMap);
-  const glm::vec4 lightF(light), offsetF(offset);
+//------------------------------------------------------------------------------
+void vtkShadowMapManager::SetViewLookupUniforms(vtkShaderProgram* program,
+  const std::string& prefix, const std::string& index, const ViewLookup& lookup)
+{
   auto name = [&](const char* what) { return prefix + what + index; };
   program->SetUniformMatrix4x4(
-    name("ViewToMap").c_str(), const_cast<float*>(glm::value_ptr(viewToMapF)));
-  program->SetUniform4f(name("LightVC").c_str(), glm::value_ptr(lightF));
-  program->SetUniform4f(name("OffsetVC").c_str(), glm::value_ptr(offsetF));
+    name("ViewToMap").c_str(), const_cast<float*>(glm::value_ptr(lookup.ViewToMap)));
+  program->SetUniform4f(name("LightVC").c_str(), glm::value_ptr(lookup.Light));
+  program->SetUniform4f(name("OffsetVC").c_str(), glm::value_ptr(lookup.Offset));
 }
 
 //------------------------------------------------------------------------------

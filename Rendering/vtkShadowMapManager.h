@@ -240,14 +240,24 @@ public:
     const std::string& index, const Frustum& frustum, int mapSize);
 
   /**
-   * The same for receivers' lookups from the camera's view coordinates,
-   * whose `viewToWorld` is given, with an offset of `texels` texels
-   * (vtkShadowOffsetInMap, vtkShadowNormalOffsetFS.glsl):
-   * `<prefix>ViewToMap<index>`, `LightVC` and `OffsetVC`.
+   * What receivers' lookups from the camera's view coordinates need of a
+   * frustum (vtkShadowOffsetInMap, vtkShadowNormalOffsetFS.glsl), composed in
+   * double once a frame: the view-to-map matrix, the light in view
+   * coordinates (its eye, w = 1; its direction, w = 0) and the offset of
+   * `texels` texels as a plane.
    */
-  static void SetViewFrustumUniforms(vtkShaderProgram* program, const std::string& prefix,
-    const std::string& index, const Frustum& frustum, int mapSize, double texels,
-    const glm::dmat4& viewToWorld);
+  struct ViewLookup
+  {
+    glm::mat4 ViewToMap{ 1.0f };
+    glm::vec4 Light{ 0.0f };
+    glm::vec4 Offset{ 0.0f };
+  };
+  static ViewLookup GetViewLookup(const Frustum& frustum, int mapSize, double texels,
+    const glm::dmat4& viewToWorld, const glm::dmat4& worldToView);
+
+  /// Upload `lookup` as `<prefix>ViewToMap<index>`, `LightVC` and `OffsetVC`.
+  static void SetViewLookupUniforms(vtkShaderProgram* program, const std::string& prefix,
+    const std::string& index, const ViewLookup& lookup);
 
   /**
    * Upload what shaders need of a cube map for vtkShadowCubeLookupFS.glsl:

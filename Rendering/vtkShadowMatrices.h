@@ -34,10 +34,16 @@ inline glm::dmat4 FromVTK(vtkMatrix4x4* m)
   return result;
 }
 
+/// The camera's world to view matrix (its model-view).
+inline glm::dmat4 WorldToView(vtkCamera* camera)
+{
+  return FromVTK(camera->GetModelViewTransformMatrix());
+}
+
 /// The camera's view to world matrix.
 inline glm::dmat4 ViewToWorld(vtkCamera* camera)
 {
-  return glm::inverse(FromVTK(camera->GetModelViewTransformMatrix()));
+  return glm::inverse(WorldToView(camera));
 }
 
 inline void ToVTK(const glm::dmat4& m, vtkMatrix4x4* result)

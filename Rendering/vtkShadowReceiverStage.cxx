@@ -16,6 +16,8 @@
 #include "vtkShadowSurfaceFS.h"
 #include "vtkSoftShadowReceiverFS.h"
 
+#include <glm/gtc/type_ptr.hpp>
+
 #include <algorithm>
 #include <sstream>
 
@@ -25,6 +27,46 @@ std::string Indexed(const char* name, int i)
 {
   return std::string(name) + "[" + std::to_string(i) + "]";
 }
+}
+
+// The camera's and the lights' uniforms, the same for every draw of a frame.
+struct vtkShadowReceiverStage::FrameUniforms
+{
+  glm::mat4 ViewToWorld{ 1.0f };
+  std::vector<vtkShadowMapManager::ViewLookup> Lookups; ///< per light slot
+};
+
+//------------------------------------------------------------------------------
+vtkShadowReceiverStage::vtkShadowReceiverStage()
+  : Uniforms(new FrameUniforms)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkShadowReceiverStage::~vtkShadowReceiverStage() = default;
+
+//------------------------------------------------------------------------------
+void vtkShadowReceiverStage::SetFrame(Frame frame)
+{
+  this->Current = std::move(frame);
+  FrameUniforms& uniforms = *this->Uniforms;
+  uniforms.Lookups.clear();
+  const vtkShadowMapManager* maps = this->Current.Maps;
+  if (!maps || !maps->GetRenderer())
+  {
+    return;
+  }
+  const glm::dmat4 worldToView =
+    vtkShadowMatrices::WorldToView(maps->GetRenderer()->GetActiveCamera());
+  const glm::dmat4 viewToWorld = glm::inverse(worldToView);
+  uniforms.ViewToWorld = glm::mat4(viewToWorld);
+  for (const auto& light : maps->GetLights())
+  {
+    uniforms.Lookups.push_back(light.Point
+        ? vtkShadowMapManager::ViewLookup()
+        : vtkShadowMapManager::GetViewLookup(
+            light.Map, this->Current.MapSize, this->Current.NormalBias, viewToWorld, worldToView));
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -226,9 +268,9 @@ void vtkShadowReceiverStage::SetUniforms(vtkShaderProgram* program, vtkProp* pro
   {
     return;
   }
-  vtkRenderer* renderer = frame.Maps->GetRenderer();
-  SetViewToWorld(program, renderer);
-  const glm::dmat4 viewToWorld = vtkShadowMatrices::ViewToWorld(renderer->GetActiveCamera());
+  const FrameUniforms& uniforms = *this->Uniforms;
+  program->SetUniformMatrix4x4(
+    "vtkShadowViewToWorld", const_cast<float*>(glm::value_ptr(uniforms.ViewToWorld)));
   program->SetUniformf("vtkShadowMapTexel", 1.0f / static_cast<float>(frame.MapSize));
   vtkShadowMapManager::SetLookupUniforms(
     program, "vtkShadow", frame.MapSize, frame.NormalBias, frame.DistanceBias);
@@ -250,8 +292,11 @@ void vtkShadowReceiverStage::SetUniforms(vtkShaderProgram* program, vtkProp* pro
     }
     const std::string index = "[" + std::to_string(i) + "]";
     vtkShadowMapManager::SetFrustumUniforms(program, "vtkShadow", index, light.Map, frame.MapSize);
-    vtkShadowMapManager::SetViewFrustumUniforms(
-      program, "vtkShadow", index, light.Map, frame.MapSize, frame.NormalBias, viewToWorld);
+    if (slot < uniforms.Lookups.size()) // set with the frame
+    {
+      vtkShadowMapManager::SetViewLookupUniforms(
+        program, "vtkShadow", index, uniforms.Lookups[slot]);
+    }
     if (light.DepthMap) // techniques with maps of their own may not draw it
     {
       program->SetUniformi(

@@ -25,6 +25,7 @@
 #include "vtkShadowStage.h"
 
 #include <functional> // for std::function
+#include <memory>     // for std::unique_ptr
 #include <string>     // for std::string
 #include <vector>     // for std::vector
 
@@ -113,7 +114,12 @@ public:
     }
   };
 
-  void SetFrame(Frame frame) { this->Current = std::move(frame); }
+  vtkShadowReceiverStage();
+  ~vtkShadowReceiverStage() override;
+
+  /// Also composes what every receiver's draw uploads of the camera and
+  /// the lights, once a frame.
+  void SetFrame(Frame frame);
   const Frame& GetFrame() const { return this->Current; }
 
   /**
@@ -135,6 +141,8 @@ public:
 
 private:
   Frame Current;
+  struct FrameUniforms;
+  std::unique_ptr<FrameUniforms> Uniforms;
   int OwnTextures = 0;
 };
 

@@ -74,6 +74,8 @@ public:
   unsigned int Queries[2] = { 0, 0 }; // did the last blur pass draw any pixel?
   size_t CameraPassFirst = 0;         // the first light the camera pass draws
   std::vector<int> CameraPassUnits;   // texture units of its lights' maps
+  // Its 2D maps' lookups from view coordinates, composed once a frame.
+  std::vector<vtkShadowMapManager::ViewLookup> CameraPassLookups;
   // See vtkContactPassesFor() in vtkContactDistanceFS.glsl.
   std::vector<float> PassStarts;           // variance before each pass
   std::vector<float> PassInverseVariances; // 1 / each pass's variance
@@ -296,6 +298,10 @@ bool vtkContactHardeningShadowPass::RenderDistanceMaps(
   const auto& lights = this->Maps->GetLights();
   in.CameraPassFirst = first;
   in.CameraPassUnits.clear();
+  in.CameraPassLookups.clear();
+  vtkCamera* camera = this->Maps->GetRenderer()->GetActiveCamera();
+  const glm::dmat4 worldToView = vtkShadowMatrices::WorldToView(camera);
+  const glm::dmat4 viewToWorld = glm::inverse(worldToView);
   // 2D maps are read through the non-comparing sampler; cube maps hold
   // distances already.
   std::vector<vtkShadowScreenBuffers::Sampler> maps;
@@ -312,6 +318,10 @@ bool vtkContactHardeningShadowPass::RenderDistanceMaps(
       maps.emplace_back(
         this->Screen.get(), light.DepthMap, vtkShadowScreenBuffers::Sampler::Reading::RawDepth);
     }
+    in.CameraPassLookups.push_back(light.Point
+        ? vtkShadowMapManager::ViewLookup()
+        : vtkShadowMapManager::GetViewLookup(
+            light.Map, this->MapSize, this->NormalBias, viewToWorld, worldToView));
     in.CameraPassUnits.push_back((light.Point ? light.CubeMap : light.DepthMap)->GetTextureUnit());
   }
   const bool ok = this->RenderCameraDepth(s, targets,
@@ -326,6 +336,7 @@ bool vtkContactHardeningShadowPass::RenderDistanceMaps(
     }
   }
   in.CameraPassUnits.clear();
+  in.CameraPassLookups.clear();
   return ok;
 }
 
@@ -399,8 +410,6 @@ void vtkContactHardeningShadowPass::SetDistanceMapUniforms(vtkShaderProgram* pro
 {
   const vtkInternals& in = *this->Internals;
   const auto& lights = this->Maps->GetLights();
-  const glm::dmat4 viewToWorld =
-    vtkShadowMatrices::ViewToWorld(this->Maps->GetRenderer()->GetActiveCamera());
   int maps = 0, cubes = 0;
   for (size_t k = 0; k < in.CameraPassUnits.size(); ++k)
   {
@@ -417,8 +426,8 @@ void vtkContactHardeningShadowPass::SetDistanceMapUniforms(vtkShaderProgram* pro
     {
       program->SetUniformi(
         ("contactLightDepth[" + std::to_string(maps++) + "]").c_str(), in.CameraPassUnits[k]);
-      vtkShadowMapManager::SetViewFrustumUniforms(
-        program, "contact", index, light.Map, this->MapSize, this->NormalBias, viewToWorld);
+      vtkShadowMapManager::SetViewLookupUniforms(
+        program, "contact", index, in.CameraPassLookups[k]);
       const glm::vec2 range(light.Map.Near, light.Map.Far);
       program->SetUniform2f(("contactDepthRange" + index).c_str(), glm::value_ptr(range));
     }
