@@ -138,6 +138,7 @@ vec4 vtkShadowScreenWeights; // lower left, lower right, upper left, upper right
 float vtkShadowScreenCameraDistance;
 float vtkShadowScreenFragment;
 float vtkShadowScreenTolerance;
+vec2 vtkShadowScreenCodeRange; // the least and the greatest code on its surface
 uniform vec2 vtkShadowTexelFootprint; // a texel's world size: x + y * camera distance
 
 void vtkShadowScreenSetup(vec3 positionVC)
@@ -161,6 +162,10 @@ void vtkShadowScreenSetup(vec3 positionVC)
   vec2 slope = vec2(dFdx(vtkShadowScreenFragment), dFdy(vtkShadowScreenFragment));
   vtkShadowScreenTolerance =
     0.0286 * vtkShadowCodesPerLog + 0.5 + dot(abs(slope), 1.0 / vtkShadowScreenScale);
+  // As the codes a texel may have, 0 (the background) excluded: one range
+  // for all lights.
+  vtkShadowScreenCodeRange = vec2(max(vtkShadowScreenFragment - vtkShadowScreenTolerance, 0.5),
+    vtkShadowScreenFragment + vtkShadowScreenTolerance);
 }
 
 // A screen-space visibility texture (vtkShadowScreenBuffers::BeginVisibility:
@@ -185,8 +190,8 @@ void vtkShadowScreenDecode(vec4 codes, float hard, out vec4 weights, out vec4 va
   vec4 distances = codes - 2048.0 * visibility;
   valid = vec4(notEqual(visibility, vec4(255.0)));
   weights = vtkShadowScreenWeights *
-    vec4(lessThanEqual(abs(distances - vtkShadowScreenFragment), vec4(vtkShadowScreenTolerance))) *
-    vec4(greaterThan(distances, vec4(0.0)));
+    vec4(greaterThanEqual(distances, vec4(vtkShadowScreenCodeRange.x))) *
+    vec4(lessThanEqual(distances, vec4(vtkShadowScreenCodeRange.y)));
   values = mix(vec4(hard), visibility / 254.0, valid);
 }
 

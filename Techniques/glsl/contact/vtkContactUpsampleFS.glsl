@@ -46,8 +46,10 @@ float vtkContactScreenVisibility(sampler2D screen, float hard)
 #endif
   vec4 weights, values, valid;
   vtkShadowScreenDecode(codes, hard, weights, values, valid);
-  vec4 across = abs(lit - (hard >= 0.5 ? 1.0 : 0.0)) * valid;
-  vec4 keep = 1.0 - across * (1.0 - clamp(abs(values - lit) * 2.0, 0.0, 1.0));
+  // An invalid texel (its value `hard`, from the fragment's side of 0.5)
+  // across the edge keeps all: only valid ones need the test.
+  vec4 across = abs(lit - (hard >= 0.5 ? 1.0 : 0.0));
+  vec4 keep = mix(vec4(1.0), min(abs(values - lit) * 2.0, 1.0), across);
 #if CONTACT_REFINE
   // The texels' penumbra width (vtkShadowWidthCode()) where they have one;
   // exp2 of the mean code, one exp2 rather than four.
