@@ -26,6 +26,16 @@ vec4 vtkShadowNormalOffset(
   return vec4(positionWC.xyz + toLight * (texel * texels / facing), 1.0);
 }
 
+// The map coordinates ([0,1]^3) of a point (world or view coordinates,
+// `toMap` from them), and whether the point lies in the map's frustum (in
+// front of its eye, inside its bounds): what lies outside is lit.
+bool vtkShadowInMap(mat4 toMap, vec4 position, out vec3 map)
+{
+  vec4 p = toMap * position;
+  map = p.xyz / p.w;
+  return p.w > 0.0 && all(greaterThanEqual(map, vec3(0.0))) && all(lessThanEqual(map, vec3(1.0)));
+}
+
 // vtkShadowNormalOffset() then vtkShadowInMap(), on a point in the camera's
 // view coordinates, as the receivers' fragments have them: no transform to
 // the world and back, no branch on the light's type, and what is constant
@@ -41,17 +51,5 @@ bool vtkShadowOffsetInMap(mat4 viewToMap, vec4 light, vec4 offset, vec3 position
   // offset / max(cos(theta), 1/4), over |toLight| for moving along it.
   float along = (dot(positionVC, offset.xyz) + offset.w) /
     max(abs(dot(normalVC, toLight)), 0.25 * sqrt(dot(toLight, toLight)));
-  vec4 p = viewToMap * vec4(positionVC + along * toLight, 1.0);
-  map = p.xyz / p.w;
-  return p.w > 0.0 && all(greaterThanEqual(map, vec3(0.0))) && all(lessThanEqual(map, vec3(1.0)));
-}
-
-// The map coordinates ([0,1]^3) of a world point in `map`, and whether the
-// point lies in the map's frustum (in front of its eye, inside its bounds):
-// what lies outside is lit.
-bool vtkShadowInMap(mat4 worldToMap, vec4 positionWC, out vec3 map)
-{
-  vec4 p = worldToMap * positionWC;
-  map = p.xyz / p.w;
-  return p.w > 0.0 && all(greaterThanEqual(map, vec3(0.0))) && all(lessThanEqual(map, vec3(1.0)));
+  return vtkShadowInMap(viewToMap, vec4(positionVC + along * toLight, 1.0), map);
 }
