@@ -10,6 +10,7 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkShadowLightSize.h"
+#include "vtkShadowMatrices.h"
 #include "vtkShadowParallelMaps.h"
 #include "vtkShadowVTKVersion.h" // for GL_R32F..., through GLEW or glad
 #include "vtkTextureObject.h"
@@ -507,6 +508,26 @@ vtkShadowMapManager::ViewLookup vtkShadowMapManager::GetViewLookup(const Frustum
   lookup.Light = glm::vec4(light);
   lookup.Offset = glm::vec4(offset);
   return lookup;
+}
+
+//------------------------------------------------------------------------------
+std::vector<vtkShadowMapManager::ViewLookup> vtkShadowMapManager::GetViewLookups(
+  int mapSize, double texels) const
+{
+  std::vector<ViewLookup> lookups;
+  if (!this->Renderer)
+  {
+    return lookups;
+  }
+  const glm::dmat4 worldToView = vtkShadowMatrices::WorldToView(this->Renderer->GetActiveCamera());
+  const glm::dmat4 viewToWorld = glm::inverse(worldToView);
+  for (const auto& light : this->Lights)
+  {
+    lookups.push_back(light.Point
+        ? ViewLookup()
+        : GetViewLookup(light.Map, mapSize, texels, viewToWorld, worldToView));
+  }
+  return lookups;
 }
 
 //------------------------------------------------------------------------------

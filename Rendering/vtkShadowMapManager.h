@@ -255,6 +255,10 @@ public:
   static ViewLookup GetViewLookup(const Frustum& frustum, int mapSize, double texels,
     const glm::dmat4& viewToWorld, const glm::dmat4& worldToView);
 
+  /// GetViewLookup() of every shadowed light (a default one for a point
+  /// light) through the renderer's active camera; none without a renderer.
+  std::vector<ViewLookup> GetViewLookups(int mapSize, double texels) const;
+
   /// Upload `lookup` as `<prefix>ViewToMap<index>`, `LightVC` and `OffsetVC`.
   static void SetViewLookupUniforms(vtkShaderProgram* program, const std::string& prefix,
     const std::string& index, const ViewLookup& lookup);

@@ -56,17 +56,9 @@ void vtkShadowReceiverStage::SetFrame(Frame frame)
   {
     return;
   }
-  const glm::dmat4 worldToView =
-    vtkShadowMatrices::WorldToView(maps->GetRenderer()->GetActiveCamera());
-  const glm::dmat4 viewToWorld = glm::inverse(worldToView);
-  uniforms.ViewToWorld = glm::mat4(viewToWorld);
-  for (const auto& light : maps->GetLights())
-  {
-    uniforms.Lookups.push_back(light.Point
-        ? vtkShadowMapManager::ViewLookup()
-        : vtkShadowMapManager::GetViewLookup(
-            light.Map, this->Current.MapSize, this->Current.NormalBias, viewToWorld, worldToView));
-  }
+  uniforms.ViewToWorld =
+    glm::mat4(vtkShadowMatrices::ViewToWorld(maps->GetRenderer()->GetActiveCamera()));
+  uniforms.Lookups = maps->GetViewLookups(this->Current.MapSize, this->Current.NormalBias);
 }
 
 //------------------------------------------------------------------------------

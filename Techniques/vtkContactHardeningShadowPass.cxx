@@ -10,7 +10,6 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkShadowMapManager.h"
-#include "vtkShadowMatrices.h"
 #include "vtkShadowSampling.h"
 #include "vtkShadowScreenBuffers.h"
 #include "vtkShadowVTKVersion.h"
@@ -74,7 +73,7 @@ public:
   unsigned int Queries[2] = { 0, 0 }; // did the last blur pass draw any pixel?
   size_t CameraPassFirst = 0;         // the first light the camera pass draws
   std::vector<int> CameraPassUnits;   // texture units of its lights' maps
-  // Its 2D maps' lookups from view coordinates, composed once a frame.
+  // Every light's lookup from view coordinates, composed once a camera pass.
   std::vector<vtkShadowMapManager::ViewLookup> CameraPassLookups;
   // See vtkContactPassesFor() in vtkContactDistanceFS.glsl.
   std::vector<float> PassStarts;           // variance before each pass
@@ -298,10 +297,7 @@ bool vtkContactHardeningShadowPass::RenderDistanceMaps(
   const auto& lights = this->Maps->GetLights();
   in.CameraPassFirst = first;
   in.CameraPassUnits.clear();
-  in.CameraPassLookups.clear();
-  vtkCamera* camera = this->Maps->GetRenderer()->GetActiveCamera();
-  const glm::dmat4 worldToView = vtkShadowMatrices::WorldToView(camera);
-  const glm::dmat4 viewToWorld = glm::inverse(worldToView);
+  in.CameraPassLookups = this->Maps->GetViewLookups(this->MapSize, this->NormalBias);
   // 2D maps are read through the non-comparing sampler; cube maps hold
   // distances already.
   std::vector<vtkShadowScreenBuffers::Sampler> maps;
@@ -318,10 +314,6 @@ bool vtkContactHardeningShadowPass::RenderDistanceMaps(
       maps.emplace_back(
         this->Screen.get(), light.DepthMap, vtkShadowScreenBuffers::Sampler::Reading::RawDepth);
     }
-    in.CameraPassLookups.push_back(light.Point
-        ? vtkShadowMapManager::ViewLookup()
-        : vtkShadowMapManager::GetViewLookup(
-            light.Map, this->MapSize, this->NormalBias, viewToWorld, worldToView));
     in.CameraPassUnits.push_back((light.Point ? light.CubeMap : light.DepthMap)->GetTextureUnit());
   }
   const bool ok = this->RenderCameraDepth(s, targets,
@@ -427,7 +419,7 @@ void vtkContactHardeningShadowPass::SetDistanceMapUniforms(vtkShaderProgram* pro
       program->SetUniformi(
         ("contactLightDepth[" + std::to_string(maps++) + "]").c_str(), in.CameraPassUnits[k]);
       vtkShadowMapManager::SetViewLookupUniforms(
-        program, "contact", index, in.CameraPassLookups[k]);
+        program, "contact", index, in.CameraPassLookups[in.CameraPassFirst + k]);
       const glm::vec2 range(light.Map.Near, light.Map.Far);
       program->SetUniform2f(("contactDepthRange" + index).c_str(), glm::value_ptr(range));
     }
