@@ -33,6 +33,8 @@ struct VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowCameraPassCode
   std::string Declarations;
   std::string Implementation;
   std::function<void(vtkShaderProgram*)> Uniforms;
+  /// What the targets hold where no fragment is drawn (the background).
+  float ClearColour[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
 };
 
 class VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowCameraStage : public vtkShadowStage

@@ -466,6 +466,7 @@ bool vtkSoftShadowPass::RenderCameraDepth(const vtkRenderState* s,
   vtkShadowDrawSetup setup;
   setup.Depth = this->Screen->GetCameraDepth();
   setup.Colours = targets;
+  std::copy(code.ClearColour, code.ClearColour + 4, setup.ClearColour);
   setup.Draw = vtkShadowDrawSetup::Props::Camera;
   setup.Stage = this->CameraStage.get();
   this->CameraStage->SetCode(&code, s->GetRenderer());

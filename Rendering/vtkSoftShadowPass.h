@@ -411,8 +411,8 @@ protected:
    * fragment the camera sees also runs `code`, which writes
    * gl_FragData[0 .. targets - 1]: per-pixel work done with the geometry's
    * own position and normal instead of a full-screen pass rebuilding them
-   * from depth. Targets are cleared to 0 first; unlit fragments (no
-   * view-space position in the mapper) write 0.
+   * from depth. Targets are cleared to `code.ClearColour` (default 0) first;
+   * unlit fragments (no view-space position in the mapper) write 0.
    */
   bool RenderCameraDepth(const vtkRenderState* s,
     const std::vector<vtkTextureObject*>& targets = {}, const CameraPassCode& code = {});

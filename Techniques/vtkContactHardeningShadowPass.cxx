@@ -316,9 +316,13 @@ bool vtkContactHardeningShadowPass::RenderDistanceMaps(
     }
     in.CameraPassUnits.push_back((light.Point ? light.CubeMap : light.DepthMap)->GetTextureUnit());
   }
+  // The background reads lit (r = 1, b = 0): no blur counts it
+  // (vtkContactSameSurface()), and the tiles then find no shadow to dilate
+  // where a surface meets it.
   const bool ok = this->RenderCameraDepth(s, targets,
     { this->DistanceMapDeclarations(), this->DistanceMapImplementation(),
-      [this](vtkShaderProgram* program) { this->SetDistanceMapUniforms(program); } });
+      [this](vtkShaderProgram* program) { this->SetDistanceMapUniforms(program); },
+      { 1.0f, 0.0f, 0.0f, 0.0f } });
   maps.clear();
   for (size_t k = 0; k < count; ++k)
   {

@@ -8,7 +8,8 @@
 // pixels, as a kernel size (PCF, Gaussian) or a number of blur passes
 // (multi-pass). Written in the filtering layout (vtkContactCommonFS.glsl),
 // so that the map serves as one of the ping-pong buffers: r = 1 - S, g = 0
-// (not blurred yet), b = the camera distance, a = D; background stays 0.
+// (not blurred yet), b = the camera distance, a = D; the background stays
+// as the pass clears it: lit, no surface (1, 0, 0, 0).
 // Spot and directional lights: their map's raw depth (CONTACT_MAPS samplers
 // without comparison); point lights: their cube map of squared distances
 // (CONTACT_CUBES).

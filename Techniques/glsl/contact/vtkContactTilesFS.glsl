@@ -2,9 +2,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Tile classification for the prepare pass, step 1: per tile of
 // contactTileSize^2 pixels of the distance map (contactMap, read through a
-// bilinear sampler), the least and the greatest S (1 - r; background counts
-// as shadowed, which only lets umbra pixels beside it out early, where they
-// are umbra anyway). S is 0 or 1 there, so a bilinear tap on a texel
+// bilinear sampler), the least and the greatest S (1 - r; the background
+// reads lit, so a surface beside it has nothing to dilate there). S is 0 or
+// 1 there, so a bilinear tap on a texel
 // corner, the mean of four, is 1 only if all four are and 0 only if none
 // is: a quarter of the fetches.
 // Uses: vtkShadowScreenCommonFS.glsl, vtkContactCommonFS.glsl.
