@@ -9,9 +9,11 @@
 #
 # defaults Examples/Scenes/demo.json, contact, 512x512. Prints the
 # instructions of one frame of `hard` and of TECHNIQUE, and their ratio:
-# `softshadows bench` over 2 and over 6 frames (each frame draws `hard` and
-# TECHNIQUE), the difference divided by 4, so start-up and shader compilation
-# cancel. Each count follows a counted warm-up run of 2 frames: Mesa's shader cache is
+# `softshadows bench` over 1 and over 5 frames (each draws `hard` and
+# TECHNIQUE), the difference divided by 4, so start-up, shader compilation
+# and the frame before each technique's block (bench draws a technique's
+# frames in blocks of up to 5) cancel. Each count follows a counted warm-up
+# run of 1 frame: Mesa's shader cache is
 # keyed by the CPU, and the one valgrind presents differs from the
 # machine's. A few minutes a technique.
 set -euo pipefail
@@ -39,11 +41,11 @@ count() {
 
 # Instructions of one frame of `hard` plus one of $1 (just `hard` for hard).
 per_frame() {
-  count "$1" 2 >/dev/null
-  local two six
-  two=$(count "$1" 2)
-  six=$(count "$1" 6)
-  echo $(((six - two) / 4))
+  count "$1" 1 >/dev/null
+  local one five
+  one=$(count "$1" 1)
+  five=$(count "$1" 5)
+  echo $(((five - one) / 4))
 }
 
 hard=$(per_frame hard)

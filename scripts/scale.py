@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """How each technique's cost grows with the scene: `softshadows bench` over
 generated scenes in three sweeps, each technique in a process of its own
-beside `hard` (their frames interleaved, so that the ratio is of one run):
+beside `hard` (taking turns in one window: the ratio is of one run):
 
   triangles  a dense isosurface (the `gyroid` source) of 0.1M, 1M and 10M
              triangles over a floor, 512x512

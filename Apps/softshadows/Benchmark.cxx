@@ -95,6 +95,9 @@ double Round3(double value)
 {
   return std::round(value * 1000.0) / 1000.0;
 }
+
+// Timed frames a technique draws in a row.
+constexpr int BlockFrames = 5;
 }
 
 //------------------------------------------------------------------------------
@@ -107,48 +110,74 @@ std::vector<Timing> RunBenchmark(vtkRenderWindow* window, vtkRenderer* renderer,
   std::vector<std::vector<double>> cpu(techniques.size());
   std::vector<std::vector<double>> pass(techniques.size());
   std::vector<std::array<std::vector<double>, 3>> steps(techniques.size());
+  // Frames are timed in blocks of a technique, each after an untimed frame
+  // of it, the techniques taking turns block by block. Interleaved frame by
+  // frame, every frame would switch the mappers' render pass, and VTK's
+  // mappers build their shader sources again whenever it changes: a cost no
+  // application drawing with one technique pays. Taking turns spreads the
+  // machine's drift over all of them.
+  const int blocks = (frames + BlockFrames - 1) / BlockFrames;
+  const int perTechnique = warmUp + blocks + frames;
+  const double total = static_cast<double>(perTechnique * techniques.size());
+  int drawn = 0;
+  std::vector<int> counts(techniques.size(), 0); // frames each technique drew
   LightOrbit orbit(FirstLight(renderer));
-  const double total = static_cast<double>((warmUp + frames) * techniques.size());
-  for (int round = 0; round < warmUp + frames; ++round)
+  auto draw = [&](std::size_t t, bool timed)
+  {
+    orbit.Step();
+    renderer->SetPass(techniques[t].Pass);
+    // A frame of `reference` takes seconds: its samples count too.
+    const double done = static_cast<double>(drawn++);
+    const std::string what = "bench: frame " + std::to_string(++counts[t]) + "/" +
+      std::to_string(perTechnique) + ", " + techniques[t].Spec;
+    Progress::Observation samples;
+    if (progress)
+    {
+      progress->Show(what, done / total);
+      samples = progress->Observe(techniques[t].Shadows,
+        [&](double fraction) { progress->Show(what, (done + fraction) / total); });
+    }
+    const auto start = Clock::now();
+    window->Render();
+    window->MakeCurrent();
+    glFinish();
+    const std::chrono::duration<double, std::milli> elapsed = Clock::now() - start;
+    if (!timed)
+    {
+      return;
+    }
+    times[t].push_back(elapsed.count());
+    if (const vtkSoftShadowPass* shadows = techniques[t].Shadows)
+    {
+      steps[t][0].push_back(shadows->GetLightSpaceTime());
+      steps[t][1].push_back(shadows->GetScreenSpaceTime());
+      steps[t][2].push_back(shadows->GetReceiversTime());
+      // The technique's own work, where it times it.
+      if (shadows->GetTechniqueCPUTime() >= 0.0)
+      {
+        cpu[t].push_back(shadows->GetTechniqueCPUTime());
+      }
+      if (shadows->GetTechniqueGPUTime() >= 0.0)
+      {
+        pass[t].push_back(shadows->GetTechniqueGPUTime());
+      }
+    }
+  };
+  for (int round = 0; round < warmUp; ++round)
   {
     for (std::size_t t = 0; t < techniques.size(); ++t)
     {
-      orbit.Step();
-      renderer->SetPass(techniques[t].Pass);
-      // A frame of `reference` takes seconds: its samples count too.
-      const double done = static_cast<double>(round * techniques.size() + t);
-      const std::string what = "bench: frame " + std::to_string(round + 1) + "/" +
-        std::to_string(warmUp + frames) + ", " + techniques[t].Spec;
-      Progress::Observation samples;
-      if (progress)
+      draw(t, false);
+    }
+  }
+  for (int first = 0; first < frames; first += BlockFrames)
+  {
+    for (std::size_t t = 0; t < techniques.size(); ++t)
+    {
+      draw(t, false);
+      for (int frame = first; frame < std::min(first + BlockFrames, frames); ++frame)
       {
-        progress->Show(what, done / total);
-        samples = progress->Observe(techniques[t].Shadows,
-          [&](double fraction) { progress->Show(what, (done + fraction) / total); });
-      }
-      const auto start = Clock::now();
-      window->Render();
-      window->MakeCurrent();
-      glFinish();
-      const std::chrono::duration<double, std::milli> elapsed = Clock::now() - start;
-      if (round >= warmUp)
-      {
-        times[t].push_back(elapsed.count());
-        if (const vtkSoftShadowPass* shadows = techniques[t].Shadows)
-        {
-          steps[t][0].push_back(shadows->GetLightSpaceTime());
-          steps[t][1].push_back(shadows->GetScreenSpaceTime());
-          steps[t][2].push_back(shadows->GetReceiversTime());
-          // The technique's own work, where it times it.
-          if (shadows->GetTechniqueCPUTime() >= 0.0)
-          {
-            cpu[t].push_back(shadows->GetTechniqueCPUTime());
-          }
-          if (shadows->GetTechniqueGPUTime() >= 0.0)
-          {
-            pass[t].push_back(shadows->GetTechniqueGPUTime());
-          }
-        }
+        draw(t, true);
       }
     }
   }

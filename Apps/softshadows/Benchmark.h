@@ -41,9 +41,12 @@ struct Timing
 };
 
 /**
- * Draws `frames` timed frames of every technique, interleaved frame by frame
- * after `warmUp` untimed rounds, moving the first light a little along a small
- * orbit before each frame so every technique redraws its shadow maps. A
+ * Draws `frames` timed frames of every technique after `warmUp` untimed
+ * rounds of all, in blocks of up to 5 frames a technique, each block after
+ * an untimed frame of it (the mappers rebuild their shaders when the render
+ * pass changes), the techniques taking turns; moves the first light a little
+ * along a small orbit before each frame so every technique redraws its
+ * shadow maps. A
  * frame's time runs from the start of Render() to glFinish() returning.
  * Leaves the light where it started. Shows its progress on `progress`.
  */
