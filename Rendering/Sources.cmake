@@ -43,6 +43,8 @@ set(softshadows_rendering_shaders
   glsl/vtkShadowCubeLookupFS.glsl
   glsl/vtkShadowNormalOffsetFS.glsl
   glsl/vtkShadowPackFS.glsl
+  glsl/vtkShadowScreenCodeFS.glsl
   glsl/vtkShadowScreenCommonFS.glsl
+  glsl/vtkShadowScreenTilesVS.glsl
   glsl/vtkShadowSurfaceFS.glsl
   glsl/vtkSoftShadowReceiverFS.glsl)

@@ -9,6 +9,9 @@
 #include "vtkShadowSurfaceFS.h"
 
 #include <algorithm>
+#include <array>
+#include <iomanip>
+#include <sstream>
 
 //------------------------------------------------------------------------------
 void vtkShadowCameraStage::Begin(const vtkShadowDrawSetup& setup)
@@ -29,7 +32,7 @@ void vtkShadowCameraStage::PreReplace(vtkShadowShaderSources& sources)
 void vtkShadowCameraStage::PostReplace(vtkShadowShaderSources& sources)
 {
   // Without lighting the mapper declares no view-space position: such
-  // fragments write 0.
+  // fragments write what the background holds.
   std::string dec, impl;
   if (this->Targets > 0 && sources.IsLit())
   {
@@ -38,13 +41,29 @@ void vtkShadowCameraStage::PostReplace(vtkShadowShaderSources& sources)
   }
   else
   {
-    for (int i = 0; i < std::max(this->Targets, 1); ++i)
-    {
-      impl += "  gl_FragData[" + std::to_string(i) + "] = vec4(0.0);\n";
-    }
+    impl = this->UnlitCode();
   }
   sources.Require(sources.Fragment, vtkShadowMapperCode::ShadowDec, dec, "the camera pass");
   sources.Require(sources.Fragment, vtkShadowMapperCode::ShadowImpl, impl, "the camera pass");
+}
+
+//------------------------------------------------------------------------------
+std::string vtkShadowCameraStage::UnlitCode() const
+{
+  std::ostringstream impl;
+  // Exact: 9 significant digits round-trip a float.
+  impl << std::scientific << std::setprecision(9);
+  for (int i = 0; i < std::max(this->Targets, 1); ++i)
+  {
+    std::array<float, 4> clear{};
+    if (this->Code && i < static_cast<int>(this->Code->ClearColours.size()))
+    {
+      clear = this->Code->ClearColours[i];
+    }
+    impl << "  gl_FragData[" << i << "] = vec4(" << clear[0] << ", " << clear[1] << ", " << clear[2]
+         << ", " << clear[3] << ");\n";
+  }
+  return impl.str();
 }
 
 //------------------------------------------------------------------------------
@@ -55,6 +74,7 @@ bool vtkShadowCameraStage::GetCodeKey(std::string& key) const
   {
     key += "\n" + this->Code->Declarations + "\n" + this->Code->Implementation;
   }
+  key += "\n" + this->UnlitCode();
   return true;
 }
 

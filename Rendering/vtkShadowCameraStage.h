@@ -9,7 +9,7 @@
  * through it): the mappers' lighting code is replaced by the technique's
  * code, which sees each fragment's surface (vtkShadowSurfaceFS.glsl) and
  * writes the draw's colour targets. Unlit fragments (no view-space position
- * in the mapper) write 0.
+ * in the mapper) write what the targets hold where no surface is.
  */
 
 #ifndef vtkShadowCameraStage_h
@@ -17,8 +17,10 @@
 
 #include "vtkShadowStage.h"
 
+#include <array>      // for std::array
 #include <functional> // for std::function
 #include <string>     // for std::string
+#include <vector>     // for std::vector
 
 class vtkRenderer;
 
@@ -33,8 +35,9 @@ struct VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowCameraPassCode
   std::string Declarations;
   std::string Implementation;
   std::function<void(vtkShaderProgram*)> Uniforms;
-  /// What the targets hold where no fragment is drawn (the background).
-  float ClearColour[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+  /// What each target holds where no surface is (the background, and
+  /// unlit fragments); 0 for targets past the list.
+  std::vector<std::array<float, 4>> ClearColours;
 };
 
 class VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowCameraStage : public vtkShadowStage
@@ -55,6 +58,8 @@ public:
   bool GetCodeKey(std::string& key) const override;
 
 private:
+  std::string UnlitCode() const;
+
   const vtkShadowCameraPassCode* Code = nullptr;
   vtkRenderer* Renderer = nullptr;
   int Targets = 0;

@@ -239,6 +239,10 @@ bool vtkShadowDrawer::Draw(const vtkRenderState* s, const vtkShadowDrawSetup& se
     setup.ClearColour[0], setup.ClearColour[1], setup.ClearColour[2], setup.ClearColour[3]);
   state->vtkglClearDepth(1.0);
   state->vtkglClear(GL_DEPTH_BUFFER_BIT | (colour ? GL_COLOR_BUFFER_BIT : 0));
+  for (size_t i = 0; colour && i < setup.ClearColours.size() && i < setup.Colours.size(); ++i)
+  {
+    glClearBufferfv(GL_COLOR, static_cast<GLint>(i), setup.ClearColours[i].data());
+  }
   if (setup.Blend == vtkShadowDrawSetup::Blending::None)
   {
     state->vtkglDisable(GL_BLEND);

@@ -88,12 +88,14 @@ struct VTKSOFTSHADOWSRENDERING_EXPORT vtkShadowDrawSetup
   /**
    * Into which target: `Depth` (a depth texture; null: the drawer's own
    * depth buffer) and `Colours` (2D textures, or cube maps with Faces), both
-   * cleared first, colours to `ClearColour`. The viewport is the targets'
+   * cleared first, colours to `ClearColour`, or target i to
+   * `ClearColours[i]` where the list has one. The viewport is the targets'
    * size.
    */
   vtkTextureObject* Depth = nullptr;
   std::vector<vtkTextureObject*> Colours;
   float ClearColour[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+  std::vector<std::array<float, 4>> ClearColours;
   ///@}
 
   /// glPolygonOffset factor and units; both 0: no offset.

@@ -20,7 +20,9 @@
 #include "vtkTextureObject.h"
 
 #include "vtkShadowPackFS.h"
+#include "vtkShadowScreenCodeFS.h"
 #include "vtkShadowScreenCommonFS.h"
+#include "vtkShadowScreenTilesVS.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -105,16 +107,25 @@ bool vtkShadowScreenBuffers::Update(const vtkRenderState* s)
 
 //------------------------------------------------------------------------------
 std::unique_ptr<vtkOpenGLQuadHelper> vtkShadowScreenBuffers::CreateQuad(
-  vtkOpenGLRenderWindow* context, const std::string& fragmentSource) const
+  vtkOpenGLRenderWindow* context, const std::string& fragmentSource, Coverage coverage) const
 {
-  const std::string fs = std::string(vtkShadowScreenCommonFS) + "\n" + fragmentSource;
-  return std::unique_ptr<vtkOpenGLQuadHelper>(new vtkOpenGLQuadHelper(
-    context, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fs.c_str(), ""));
+  std::string fs =
+    std::string(vtkShadowScreenCommonFS) + "\n" + vtkShadowScreenCodeFS + "\n" + fragmentSource;
+  std::string vs = vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader();
+  if (coverage == Coverage::Tiles)
+  {
+    vtkShaderProgram::Substitute(
+      fs, "//VTK::System::Dec", "//VTK::System::Dec\n#define VTK_SHADOW_TILES", false);
+    vs = vtkShadowScreenTilesVS;
+  }
+  return std::unique_ptr<vtkOpenGLQuadHelper>(
+    new vtkOpenGLQuadHelper(context, vs.c_str(), fs.c_str(), ""));
 }
 
 //------------------------------------------------------------------------------
 vtkOpenGLQuadHelper* vtkShadowScreenBuffers::GetQuad(const std::string& name,
-  const std::string& variant, const std::function<std::string()>& source, bool* failed)
+  const std::string& variant, const std::function<std::string()>& source, bool* failed,
+  Coverage coverage)
 {
   auto found = this->Quads.find(name);
   if (found != this->Quads.end() && found->second.Variant == variant)
@@ -123,7 +134,7 @@ vtkOpenGLQuadHelper* vtkShadowScreenBuffers::GetQuad(const std::string& name,
   }
   KeptQuad& kept = this->Quads[name];
   kept.Variant = variant;
-  kept.Quad = this->CreateQuad(this->Context, source());
+  kept.Quad = this->CreateQuad(this->Context, source(), coverage);
   if (!kept.Quad->Program)
   {
     kept.Quad.reset();
@@ -138,6 +149,70 @@ vtkOpenGLQuadHelper* vtkShadowScreenBuffers::GetQuad(const std::string& name,
 //------------------------------------------------------------------------------
 void vtkShadowScreenBuffers::DrawQuad(vtkOpenGLQuadHelper* quad,
   const std::function<void(vtkShaderProgram*)>& setUniforms, QuadMask mask, float quadDepth)
+{
+  this->DrawPass(quad->Program, setUniforms, mask, quadDepth, [quad]() { quad->Render(); });
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenBuffers::DrawTiles(vtkOpenGLQuadHelper* quad, vtkTextureObject* tiles,
+  int tileSize, const std::function<void(vtkShaderProgram*)>& setUniforms, QuadMask mask,
+  float quadDepth)
+{
+  // The pass may read the tiles itself, already active.
+  const bool active = tiles->GetTextureUnit() >= 0;
+  if (!active)
+  {
+    tiles->Activate();
+  }
+  this->DrawPass(
+    quad->Program,
+    [&](vtkShaderProgram* program)
+    {
+      program->SetUniformi("vtkShadowTiles", tiles->GetTextureUnit());
+      program->SetUniformi("vtkShadowTileSize", tileSize);
+      const float size[2] = { static_cast<float>(this->Width), static_cast<float>(this->Height) };
+      program->SetUniform2f("vtkShadowTileTargetSize", size);
+      setUniforms(program);
+    },
+    mask, quadDepth,
+    [&]()
+    {
+      // A point a tile from gl_VertexID (vtkShadowScreenTilesVS.glsl), no
+      // vertex arrays. (vtkOpenGLState does not track the point size mode.)
+      if (!this->TilesArray)
+      {
+        glGenVertexArrays(1, &this->TilesArray);
+      }
+      const GLboolean pointSize = glIsEnabled(GL_PROGRAM_POINT_SIZE);
+      glEnable(GL_PROGRAM_POINT_SIZE);
+      glBindVertexArray(this->TilesArray);
+      glDrawArrays(GL_POINTS, 0, tiles->GetWidth() * tiles->GetHeight());
+      glBindVertexArray(0);
+      if (!pointSize)
+      {
+        glDisable(GL_PROGRAM_POINT_SIZE);
+      }
+    });
+  if (!active)
+  {
+    tiles->Deactivate();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenBuffers::ClearDepth()
+{
+  vtkOpenGLState* state = this->Context->GetState();
+  vtkOpenGLState::ScopedglDepthMask depthMask(state);
+  state->vtkglDepthMask(GL_TRUE);
+  state->vtkglClearDepth(1.0);
+  state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenBuffers::DrawPass(vtkShaderProgram* program,
+  const std::function<void(vtkShaderProgram*)>& setUniforms, QuadMask mask, float quadDepth,
+  const std::function<void()>& draw)
 {
   vtkOpenGLState* state = this->Context->GetState();
   vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
@@ -164,18 +239,17 @@ void vtkShadowScreenBuffers::DrawQuad(vtkOpenGLQuadHelper* quad,
       glDepthRange(quadDepth, quadDepth);
       break;
   }
-  this->Context->GetShaderCache()->ReadyShaderProgram(quad->Program);
+  this->Context->GetShaderCache()->ReadyShaderProgram(program);
   this->CameraDepth->Activate();
-  quad->Program->SetUniformi("vtkShadowCameraDepth", this->CameraDepth->GetTextureUnit());
-  quad->Program->SetUniformMatrix4x4("vtkShadowCameraClipToWorld", this->ClipToWorld);
-  quad->Program->SetUniform3f("vtkShadowCameraPosition", this->CameraPosition);
-  if (quad->Program->IsUniformUsed("vtkShadowCodesPerLog"))
+  program->SetUniformi("vtkShadowCameraDepth", this->CameraDepth->GetTextureUnit());
+  program->SetUniformMatrix4x4("vtkShadowCameraClipToWorld", this->ClipToWorld);
+  program->SetUniform3f("vtkShadowCameraPosition", this->CameraPosition);
+  if (program->IsUniformUsed("vtkShadowCodesPerLog"))
   {
-    quad->Program->SetUniformf("vtkShadowLogNear", this->LogNear);
-    quad->Program->SetUniformf("vtkShadowCodesPerLog", this->CodesPerLog);
+    this->SetCodeUniforms(program);
   }
-  setUniforms(quad->Program);
-  quad->Render();
+  setUniforms(program);
+  draw();
   if (mask == QuadMask::Test)
   {
     glDepthRange(depthRange[0], depthRange[1]);
@@ -467,6 +541,19 @@ bool vtkShadowScreenBuffers::Pack(int numberOfLights)
 }
 
 //------------------------------------------------------------------------------
+std::string vtkShadowScreenBuffers::GetCodeDeclarations()
+{
+  return vtkShadowScreenCodeFS;
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenBuffers::SetCodeUniforms(vtkShaderProgram* program) const
+{
+  program->SetUniformf("vtkShadowLogNear", this->LogNear);
+  program->SetUniformf("vtkShadowCodesPerLog", this->CodesPerLog);
+}
+
+//------------------------------------------------------------------------------
 void vtkShadowScreenBuffers::ActivateTextures()
 {
   for (auto& texture : this->Packed)
@@ -494,8 +581,7 @@ void vtkShadowScreenBuffers::SetUniforms(vtkShaderProgram* program, int numberOf
     static_cast<float>(this->Height) / std::max(this->ViewportSize[1], 1) };
   program->SetUniform2f("vtkShadowScreenScale", scale);
   program->SetUniform2f("vtkShadowTexelFootprint", this->PixelFootprint);
-  program->SetUniformf("vtkShadowLogNear", this->LogNear);
-  program->SetUniformf("vtkShadowCodesPerLog", this->CodesPerLog);
+  this->SetCodeUniforms(program);
   for (int i = 0; i < numberOfLights && i < static_cast<int>(this->Packed.size()); ++i)
   {
     const std::string name = "vtkShadowScreen[" + std::to_string(i) + "]";
@@ -529,6 +615,11 @@ void vtkShadowScreenBuffers::ReleaseGraphicsResources(vtkWindow* w)
     glDeleteSamplers(1, &this->RawDepthSampler);
     glDeleteSamplers(1, &this->BilinearSampler);
     this->RawDepthSampler = this->BilinearSampler = 0;
+  }
+  if (this->TilesArray)
+  {
+    glDeleteVertexArrays(1, &this->TilesArray);
+    this->TilesArray = 0;
   }
   this->MaximumTargets = 0;
   this->Writer.clear();

@@ -61,12 +61,20 @@ public:
   int GetWidth() const { return this->Width; }
   int GetHeight() const { return this->Height; }
 
+  /// What a screen-space pass's draws cover: the whole buffer (DrawQuad()),
+  /// or only the tiles a texture selects (DrawTiles()).
+  enum class Coverage
+  {
+    Screen,
+    Tiles
+  };
+
   /**
    * A full-screen pass whose fragment shader is the common screen-space
    * declarations followed by `fragmentSource` (which defines main()).
    */
-  std::unique_ptr<vtkOpenGLQuadHelper> CreateQuad(
-    vtkOpenGLRenderWindow* context, const std::string& fragmentSource) const;
+  std::unique_ptr<vtkOpenGLQuadHelper> CreateQuad(vtkOpenGLRenderWindow* context,
+    const std::string& fragmentSource, Coverage coverage = Coverage::Screen) const;
 
   /**
    * A technique's full-screen pass, kept with the buffers as GetTexture()
@@ -77,7 +85,8 @@ public:
    * failed is not built again, and only that first time is `failed` set.
    */
   vtkOpenGLQuadHelper* GetQuad(const std::string& name, const std::string& variant,
-    const std::function<std::string()>& source, bool* failed = nullptr);
+    const std::function<std::string()>& source, bool* failed = nullptr,
+    Coverage coverage = Coverage::Screen);
 
   /**
    * How a quad uses the target's depth buffer as a pixel mask, so that later
@@ -99,6 +108,21 @@ public:
   void DrawQuad(vtkOpenGLQuadHelper* quad,
     const std::function<void(vtkShaderProgram*)>& setUniforms, QuadMask mask = QuadMask::None,
     float quadDepth = 0.5f);
+
+  /**
+   * Draw a Coverage::Tiles pass as DrawQuad() does, but only over the tiles
+   * `tiles` selects: a texture with a texel per `tileSize` x `tileSize`
+   * pixels of the target, whose last component is positive where its tile
+   * is drawn. A software rasterizer pays for every pixel a full-screen pass
+   * covers, even one whose shader only copies; pixels outside the drawn
+   * tiles keep what the targets held.
+   */
+  void DrawTiles(vtkOpenGLQuadHelper* quad, vtkTextureObject* tiles, int tileSize,
+    const std::function<void(vtkShaderProgram*)>& setUniforms, QuadMask mask = QuadMask::None,
+    float quadDepth = 0.5f);
+
+  /// Clear the bound depth target (a QuadMask) to 1, where no quad's test passes.
+  void ClearDepth();
 
   /**
    * Draw into light `slot`'s visibility texture (allocated on demand, the
@@ -203,11 +227,19 @@ public:
   /**
    * Light `slot`'s receivers' texture, allocated on demand (one float a
    * texel, the buffers' size), for a technique that writes the codes itself
-   * (vtkShadowPackTexel() in vtkShadowScreenCommonFS.glsl, which a quad's
+   * (vtkShadowPackTexel() in vtkShadowScreenCodeFS.glsl, which a quad's
    * shader gets) in its last passes and saves Pack() a full-screen pass.
    * Every texel must be written.
    */
   vtkTextureObject* GetPacked(int slot);
+
+  /**
+   * For a camera pass (vtkSoftShadowPass::RenderCameraDepth()) that writes
+   * receivers' codes itself: the declarations of vtkShadowPackTexel()
+   * (vtkShadowScreenCodeFS.glsl), and the uniforms they need this frame.
+   */
+  static std::string GetCodeDeclarations();
+  void SetCodeUniforms(vtkShaderProgram* program) const;
 
   /**
    * After the technique's passes: code the visibility texture of each light
@@ -230,6 +262,10 @@ public:
 
 private:
   void CreateSamplers();
+  /// DrawQuad() and DrawTiles(): the state and uniforms around `draw`.
+  void DrawPass(vtkShaderProgram* program,
+    const std::function<void(vtkShaderProgram*)>& setUniforms, QuadMask mask, float quadDepth,
+    const std::function<void()>& draw);
   void BindTargets(
     const std::vector<vtkTextureObject*>& colours, vtkTextureObject* depth, int width, int height);
   void UnbindTargets();
@@ -270,6 +306,7 @@ private:
   };
   std::map<std::string, KeptQuad> Quads;
   int MaximumTargets = 0;
+  unsigned int TilesArray = 0; // a vertex array with no arrays, for DrawTiles()
   unsigned int RawDepthSampler = 0;
   unsigned int BilinearSampler = 0;
   float PixelFootprint[2] = { 0.0f, 0.0f };

@@ -437,11 +437,12 @@ bool vtkSoftShadowPass::RenderLightDepthMaps(const vtkRenderState* s, bool linea
 }
 
 //------------------------------------------------------------------------------
-vtkOpenGLQuadHelper* vtkSoftShadowPass::GetScreenQuad(
-  const std::string& name, const std::function<std::string()>& source, const std::string& variant)
+vtkOpenGLQuadHelper* vtkSoftShadowPass::GetScreenQuad(const std::string& name,
+  const std::function<std::string()>& source, const std::string& variant, bool tiled)
 {
   bool failed = false;
-  vtkOpenGLQuadHelper* quad = this->Screen->GetQuad(name, variant, source, &failed);
+  vtkOpenGLQuadHelper* quad = this->Screen->GetQuad(name, variant, source, &failed,
+    tiled ? vtkShadowScreenBuffers::Coverage::Tiles : vtkShadowScreenBuffers::Coverage::Screen);
   if (failed)
   {
     vtkErrorMacro("The screen-space pass " << name
@@ -466,7 +467,7 @@ bool vtkSoftShadowPass::RenderCameraDepth(const vtkRenderState* s,
   vtkShadowDrawSetup setup;
   setup.Depth = this->Screen->GetCameraDepth();
   setup.Colours = targets;
-  std::copy(code.ClearColour, code.ClearColour + 4, setup.ClearColour);
+  setup.ClearColours = code.ClearColours;
   setup.Draw = vtkShadowDrawSetup::Props::Camera;
   setup.Stage = this->CameraStage.get();
   this->CameraStage->SetCode(&code, s->GetRenderer());

@@ -395,12 +395,14 @@ protected:
   /**
    * Helper for RenderScreenSpace(): the technique's full-screen pass `name`
    * (vtkShadowScreenBuffers::GetQuad()), built from `source()` on first use
-   * and again when `variant` (what the source depends on) changes. nullptr
-   * when it does not build, reported once; the pass then draws without
-   * shadows.
+   * and again when `variant` (what the source depends on) changes;
+   * `tiled` for a pass drawn by tiles (vtkShadowScreenBuffers::DrawTiles()).
+   * nullptr when it does not build, reported once; the pass then draws
+   * without shadows.
    */
   vtkOpenGLQuadHelper* GetScreenQuad(const std::string& name,
-    const std::function<std::string()>& source, const std::string& variant = std::string());
+    const std::function<std::string()>& source, const std::string& variant = std::string(),
+    bool tiled = false);
 
   /// A technique's code in the camera pass (vtkShadowCameraStage.h).
   using CameraPassCode = vtkShadowCameraPassCode;
@@ -411,8 +413,9 @@ protected:
    * fragment the camera sees also runs `code`, which writes
    * gl_FragData[0 .. targets - 1]: per-pixel work done with the geometry's
    * own position and normal instead of a full-screen pass rebuilding them
-   * from depth. Targets are cleared to `code.ClearColour` (default 0) first;
-   * unlit fragments (no view-space position in the mapper) write 0.
+   * from depth. Targets are cleared to `code.ClearColours` (default 0)
+   * first; unlit fragments (no view-space position in the mapper) write
+   * them too.
    */
   bool RenderCameraDepth(const vtkRenderState* s,
     const std::vector<vtkTextureObject*>& targets = {}, const CameraPassCode& code = {});

@@ -48,6 +48,7 @@ set(softshadows_techniques_shaders
   glsl/contact/vtkContactMultiPassFS.glsl
   glsl/contact/vtkContactPCFFS.glsl
   glsl/contact/vtkContactPrepareFS.glsl
+  glsl/contact/vtkContactPrepareTexelFS.glsl
   glsl/contact/vtkContactResolveFS.glsl
   glsl/contact/vtkContactTileSpreadFS.glsl
   glsl/contact/vtkContactTilesFS.glsl

@@ -22,6 +22,7 @@
 #include "vtkContactMultiPassFS.h"
 #include "vtkContactPCFFS.h"
 #include "vtkContactPrepareFS.h"
+#include "vtkContactPrepareTexelFS.h"
 #include "vtkContactResolveFS.h"
 #include "vtkContactTileSpreadFS.h"
 #include "vtkContactTilesFS.h"
@@ -44,6 +45,8 @@ namespace
 constexpr int MaximumTaps = 64;
 // Pixels (of the distance map) on a side of a classification tile.
 constexpr int TileSize = 8;
+// vtkShadowPackTexel() of a texel with no surface: not valid (255), distance 0.
+constexpr float NoSurfaceCode = 255.0f * 2048.0f;
 
 // Taps (x, y in [-1,1], weight) with x and y scaled to a kernel `size`
 // pixels wide and, when `round`, rounded to whole pixels as the shaders
@@ -66,6 +69,9 @@ std::vector<float> ScaledTaps(const std::vector<float>& taps, int size, bool rou
 class vtkContactHardeningShadowPass::vtkInternals
 {
 public:
+  /// Whether the camera pass writes the codes of the pixels the PCF pass
+  /// leaves alone, which then draws only the tiles with work.
+  bool CameraCodes = false;
   // This frame's screen-space passes, kept by the screen buffers.
   vtkOpenGLQuadHelper *Tiles = nullptr, *TileSpread = nullptr, *Prepare = nullptr,
                       *MultiPass = nullptr, *Coarse = nullptr, *PCF = nullptr, *Gaussian = nullptr,
@@ -105,29 +111,36 @@ public:
     return taps;
   }
 
+  /// A pass over the whole buffer, or with `tiles` only over the tiles
+  /// with work (vtkContactTileSpreadFS.glsl).
   void Draw(vtkShadowScreenBuffers* screen, vtkOpenGLQuadHelper* quad, vtkTextureObject* input,
     const std::function<void(vtkShaderProgram*)>& uniforms, float depthTolerance, bool debugView,
     vtkShadowScreenBuffers::QuadMask mask = vtkShadowScreenBuffers::QuadMask::None,
-    float quadDepth = 0.5f)
+    float quadDepth = 0.5f, vtkTextureObject* tiles = nullptr)
   {
     if (input)
     {
       input->Activate();
     }
-    screen->DrawQuad(
-      quad,
-      [&](vtkShaderProgram* program)
+    auto setUniforms = [&](vtkShaderProgram* program)
+    {
+      if (input)
       {
-        if (input)
-        {
-          program->SetUniformi("contactMap", input->GetTextureUnit());
-        }
-        program->SetUniformf("contactDepthTolerance", depthTolerance);
-        program->SetUniform2f("contactPixelFootprint", screen->GetPixelFootprint());
-        program->SetUniformi("contactDebugView", debugView ? 1 : 0);
-        uniforms(program);
-      },
-      mask, quadDepth);
+        program->SetUniformi("contactMap", input->GetTextureUnit());
+      }
+      program->SetUniformf("contactDepthTolerance", depthTolerance);
+      program->SetUniform2f("contactPixelFootprint", screen->GetPixelFootprint());
+      program->SetUniformi("contactDebugView", debugView ? 1 : 0);
+      uniforms(program);
+    };
+    if (tiles)
+    {
+      screen->DrawTiles(quad, tiles, TileSize, setUniforms, mask, quadDepth);
+    }
+    else
+    {
+      screen->DrawQuad(quad, setUniforms, mask, quadDepth);
+    }
     if (input)
     {
       input->Deactivate();
@@ -212,18 +225,24 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
   vtkRenderer* renderer = s->GetRenderer();
   auto* context = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   vtkInternals& in = *this->Internals;
-  auto withCommon = [](const char* source, const std::string& defines = std::string())
+  auto withCommon = [](const std::string& source, const std::string& defines = std::string())
   { return [=]() { return std::string(vtkContactCommonFS) + "\n" + defines + source; }; };
   in.Tiles = this->GetScreenQuad("contact.tiles", withCommon(vtkContactTilesFS));
   in.TileSpread = this->GetScreenQuad("contact.tilespread", withCommon(vtkContactTileSpreadFS));
-  // Only receivers that refine read the penumbra widths: the prepare pass
-  // codes them (a log2 a pixel) only then.
+  // Only receivers that refine read the penumbra widths: the pixels' D are
+  // settled with them coded (a log2 a pixel) only then.
   const std::string widths = this->RefineUnresolved ? "1" : "0";
-  in.Prepare = this->GetScreenQuad("contact.prepare",
-    withCommon(vtkContactPrepareFS, "#define CONTACT_WIDTHS " + widths + "\n"), widths);
+  auto settling = [&](const char* source)
+  {
+    return withCommon(std::string(vtkContactPrepareTexelFS) + "\n" + source,
+      "#define CONTACT_WIDTHS " + widths + "\n");
+  };
+  in.CameraCodes = this->Variant == PCF && !this->DebugView;
+  in.Prepare = this->GetScreenQuad("contact.prepare", settling(vtkContactPrepareFS), widths);
   in.MultiPass = this->GetScreenQuad("contact.multipass", withCommon(vtkContactMultiPassFS));
   in.Coarse = this->GetScreenQuad("contact.coarse", withCommon(vtkContactCoarseFS));
-  in.PCF = this->GetScreenQuad("contact.pcf", withCommon(vtkContactPCFFS));
+  in.PCF = this->GetScreenQuad("contact.pcf", settling(vtkContactPCFFS),
+    widths + (in.CameraCodes ? " tiled" : ""), in.CameraCodes);
   in.Gaussian = this->GetScreenQuad("contact.gaussian", withCommon(vtkContactGaussianFS));
   in.Resolve = this->GetScreenQuad("contact.resolve", withCommon(vtkContactResolveFS));
   if (!in.Tiles || !in.TileSpread || !in.Prepare || !in.MultiPass || !in.Coarse || !in.PCF ||
@@ -233,7 +252,7 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
   }
 
   // Only the single Gaussian blurs through a second buffer (rows, then
-  // columns), and only PCF taps a coarse level.
+  // columns); only PCF taps a coarse level, and it needs no prepare pass.
   if (this->Variant != Gaussian)
   {
     this->Screen->ReleaseTexture("contact.filter1");
@@ -241,6 +260,11 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
   if (this->Variant != PCF)
   {
     this->Screen->ReleaseTexture("contact.coarse");
+  }
+  else
+  {
+    this->Screen->ReleaseTexture("contact.filter0");
+    this->Screen->ReleaseTexture("contact.mask");
   }
 
   // Blur variances add: the variance before each pass, and each pass's, of
@@ -264,10 +288,14 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
   }
 
   // Pass 2 for as many lights at a time as a pass has colour targets, drawn
-  // with the camera depth; then each light's filtering.
+  // with the camera depth; then each light's filtering. The pass's targets:
+  // the lights' distance maps, then with CameraCodes their receivers'
+  // textures.
   const auto& lights = this->Maps->GetLights();
-  const size_t lightsPerPass =
-    std::min(lights.size(), static_cast<size_t>(this->Screen->GetMaximumTargets()));
+  const size_t targetsPerLight = in.CameraCodes ? 2 : 1;
+  const size_t lightsPerPass = std::max<size_t>(1,
+    std::min(
+      lights.size(), static_cast<size_t>(this->Screen->GetMaximumTargets()) / targetsPerLight));
   for (size_t first = 0; first < lights.size(); first += lightsPerPass)
   {
     const size_t count = std::min(lightsPerPass, lights.size() - first);
@@ -276,7 +304,11 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
     {
       targets.push_back(this->Screen->GetTexture("contact.distance" + std::to_string(k), 4));
     }
-    if (!this->RenderDistanceMaps(s, first, targets))
+    for (size_t k = 0; in.CameraCodes && k < count; ++k)
+    {
+      targets.push_back(this->Screen->GetPacked(static_cast<int>(first + k)));
+    }
+    if (!this->RenderDistanceMaps(s, first, count, targets))
     {
       return false;
     }
@@ -289,11 +321,10 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-bool vtkContactHardeningShadowPass::RenderDistanceMaps(
-  const vtkRenderState* s, size_t first, const std::vector<vtkTextureObject*>& targets)
+bool vtkContactHardeningShadowPass::RenderDistanceMaps(const vtkRenderState* s, size_t first,
+  size_t count, const std::vector<vtkTextureObject*>& targets)
 {
   vtkInternals& in = *this->Internals;
-  const size_t count = targets.size();
   const auto& lights = this->Maps->GetLights();
   in.CameraPassFirst = first;
   in.CameraPassUnits.clear();
@@ -318,11 +349,12 @@ bool vtkContactHardeningShadowPass::RenderDistanceMaps(
   }
   // The background reads lit (r = 1, b = 0): no blur counts it
   // (vtkContactSameSurface()), and the tiles then find no shadow to dilate
-  // where a surface meets it.
-  const bool ok = this->RenderCameraDepth(s, targets,
-    { this->DistanceMapDeclarations(), this->DistanceMapImplementation(),
-      [this](vtkShaderProgram* program) { this->SetDistanceMapUniforms(program); },
-      { 1.0f, 0.0f, 0.0f, 0.0f } });
+  // where a surface meets it. Its code is that of no surface.
+  CameraPassCode code{ this->DistanceMapDeclarations(), this->DistanceMapImplementation(),
+    [this](vtkShaderProgram* program) { this->SetDistanceMapUniforms(program); }, {} };
+  code.ClearColours.assign(count, { 1.0f, 0.0f, 0.0f, 0.0f });
+  code.ClearColours.resize(targets.size(), { NoSurfaceCode, 0.0f, 0.0f, 0.0f });
+  const bool ok = this->RenderCameraDepth(s, targets, code);
   maps.clear();
   for (size_t k = 0; k < count; ++k)
   {
@@ -352,7 +384,12 @@ std::string vtkContactHardeningShadowPass::DistanceMapDeclarations() const
       << "#define CONTACT_CUBES " << cubes << "\n"
       << "#define CONTACT_LIGHT_SIZE " << (this->UseLightSize ? 1 : 0) << "\n"
       << "#define CONTACT_COUNT_PASSES " << (this->Variant == MultiPass ? 1 : 0) << "\n"
-      << "#define CONTACT_PASS_LIMIT " << this->PassLimit << "\n";
+      << "#define CONTACT_PASS_LIMIT " << this->PassLimit << "\n"
+      << "#define CONTACT_CODES " << (in.CameraCodes ? 1 : 0) << "\n";
+  if (in.CameraCodes)
+  {
+    dec << vtkShadowScreenBuffers::GetCodeDeclarations() << "\n";
+  }
   if (this->UseLightSize && this->Variant == MultiPass)
   {
     // Exact: 9 significant digits round-trip a float.
@@ -380,11 +417,12 @@ std::string vtkContactHardeningShadowPass::DistanceMapImplementation() const
   const auto& lights = this->Maps->GetLights();
   std::ostringstream impl;
   impl << "  vtkContactCameraSetup(vtkShadowPositionVC);\n";
+  const size_t count = in.CameraPassUnits.size();
   int maps = 0, cubes = 0;
-  for (size_t k = 0; k < in.CameraPassUnits.size(); ++k)
+  for (size_t k = 0; k < count; ++k)
   {
     const auto& light = lights[in.CameraPassFirst + k];
-    impl << "  gl_FragData[" << k << "] = vtkContactDistance(";
+    impl << "  vec4 contactTexel" << k << " = vtkContactDistance(";
     if (light.Point)
     {
       impl << "contactLightCube[" << cubes++ << "], " << k
@@ -396,6 +434,12 @@ std::string vtkContactHardeningShadowPass::DistanceMapImplementation() const
       impl << "contactLightDepth[" << maps++ << "], " << k << ", "
            << (light.Directional ? "false" : "true")
            << ", vtkShadowPositionVC, vtkShadowNormalVC);\n";
+    }
+    impl << "  gl_FragData[" << k << "] = contactTexel" << k << ";\n";
+    if (in.CameraCodes)
+    {
+      impl << "  gl_FragData[" << count + k << "] = vec4(vtkContactSettledCode(contactTexel" << k
+           << "));\n";
     }
   }
   return impl.str();
@@ -431,6 +475,10 @@ void vtkContactHardeningShadowPass::SetDistanceMapUniforms(vtkShaderProgram* pro
   }
   vtkShadowMapManager::SetLookupUniforms(
     program, "contact", this->MapSize, this->NormalBias, this->DistanceBias);
+  if (in.CameraCodes)
+  {
+    this->Screen->SetCodeUniforms(program);
+  }
   if (!this->UseLightSize)
   {
     program->SetUniformf("contactDistancePower", static_cast<float>(this->DistancePower));
@@ -452,11 +500,6 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
   const std::array<vtkTextureObject*, 2> tiles = { screen->GetTexture(
                                                      "contact.tiles0", 4, tilesW, tilesH),
     screen->GetTexture("contact.tiles1", 4, tilesW, tilesH) };
-  // The filtering passes' buffers: the prepare pass's target (the multi-pass
-  // blur ping-pongs between it and the distance map), the single Gaussian's
-  // intermediate, and a depth mask: which blur passes draw a pixel.
-  vtkTextureObject* filtered = screen->GetTexture("contact.filter0", 4);
-  vtkTextureObject* mask = screen->GetTexture("contact.mask", 0);
   const std::vector<float>& taps = in.FrameTaps;
   const float tolerance = 0.1f;
 
@@ -465,7 +508,7 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
   state->vtkglDisable(GL_BLEND);
   state->PushFramebufferBindings();
   // Which tiles the early-out's and the dilation's neighbourhoods find all
-  // shadowed, or partly shadowed.
+  // shadowed, or partly shadowed, and which have any work.
   using Targets = vtkShadowScreenBuffers::Targets;
   {
     Targets bound(screen, { tiles[0] }, nullptr, tilesW, tilesH);
@@ -490,22 +533,110 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
         const int dilationReach = (this->DilationSize + 1) / 2;
         program->SetUniformi("contactEarlyOutTiles", (earlyOutReach + TileSize - 1) / TileSize);
         program->SetUniformi("contactDilationTiles", (dilationReach + TileSize - 1) / TileSize);
+        program->SetUniformi("contactEarlyOut", this->UmbraEarlyOut ? 1 : 0);
       },
       tolerance, this->DebugView);
   }
+
+  // Umbra early-out and pass 3 (vtkContactPrepareTexelFS.glsl): what the
+  // passes that settle each pixel's D need.
+  tiles[1]->Activate();
+  auto settling = [&](vtkShaderProgram* program)
+  {
+    program->SetUniformi("contactTiles", tiles[1]->GetTextureUnit());
+    program->SetUniformi("contactTileSize", TileSize);
+    program->SetUniformi("contactEarlyOut", this->UmbraEarlyOut ? 1 : 0);
+    program->SetUniformi("contactDilation", this->Dilation ? 1 : 0);
+    // D counts passes (a fraction blends the last in) or kernel pixels.
+    program->SetUniformf("contactSmallestD", this->Variant == MultiPass ? 0.01f : 1.5f);
+    program->SetUniformi("contactMaximumKernel", this->MaximumKernelSize);
+    if (this->RefineUnresolved) // CONTACT_WIDTHS
+    {
+      program->SetUniformi("contactCountsPasses", this->Variant == MultiPass ? 1 : 0);
+      // Summed variances of 0 .. 64 passes (those past the limit add none).
+      std::vector<float> variances(in.PassStarts);
+      variances.push_back(in.PassStarts.back() + 1.0f / in.PassInverseVariances.back());
+      variances.resize(65, variances.back());
+      program->SetUniform1fv("contactPassVariances", 65, variances.data());
+    }
+    const std::vector<float> dilationTaps = ScaledTaps(taps, this->DilationSize);
+    program->SetUniform3fv("contactTaps", this->PoissonTaps, dilationTaps.data());
+    program->SetUniformi("contactTapCount", this->PoissonTaps);
+  };
+  vtkTextureObject* packed = screen->GetPacked(slot);
+  if (this->Variant == PCF)
+  {
+    this->FilterPCF(distance, tiles[1], packed, settling);
+  }
+  else
+  {
+    this->FilterBlurs(distance, packed, settling);
+  }
+  tiles[1]->Deactivate();
+  state->PopFramebufferBindings();
+}
+
+//------------------------------------------------------------------------------
+void vtkContactHardeningShadowPass::FilterPCF(vtkTextureObject* distance, vtkTextureObject* tiles,
+  vtkTextureObject* packed, const std::function<void(vtkShaderProgram*)>& settling)
+{
+  // The coarse level for the widest discs, then the discs: one pass that
+  // settles each pixel's D itself, drawn (but for the debug view, which
+  // marks every pixel) only over the tiles with work; the camera pass wrote
+  // the other pixels' codes. The early-out and the dilation leave the
+  // visibility and the distance as they are, so both passes tap the
+  // distance map.
+  vtkInternals& in = *this->Internals;
+  vtkShadowScreenBuffers* screen = this->Screen.get();
+  using Targets = vtkShadowScreenBuffers::Targets;
+  const float tolerance = 0.1f;
+  const int coarseW = (screen->GetWidth() + 1) / 2;
+  const int coarseH = (screen->GetHeight() + 1) / 2;
+  vtkTextureObject* coarse = screen->GetTexture("contact.coarse", 4, coarseW, coarseH);
+  {
+    Targets bound(screen, { coarse }, nullptr, coarseW, coarseH);
+    in.Draw(
+      screen, in.Coarse, distance, [](vtkShaderProgram*) {}, tolerance, this->DebugView);
+  }
+  coarse->Activate();
+  {
+    Targets bound(screen, { packed });
+    in.Draw(
+      screen, in.PCF, distance,
+      [&](vtkShaderProgram* program)
+      {
+        settling(program);
+        program->SetUniformi("contactCoarse", coarse->GetTextureUnit());
+      },
+      tolerance, this->DebugView, vtkShadowScreenBuffers::QuadMask::None, 0.5f,
+      in.CameraCodes ? tiles : nullptr);
+  }
+  coarse->Deactivate();
+}
+
+//------------------------------------------------------------------------------
+void vtkContactHardeningShadowPass::FilterBlurs(vtkTextureObject* distance,
+  vtkTextureObject* packed, const std::function<void(vtkShaderProgram*)>& settling)
+{
+  vtkInternals& in = *this->Internals;
+  vtkShadowScreenBuffers* screen = this->Screen.get();
+  using Targets = vtkShadowScreenBuffers::Targets;
+  const std::vector<float>& taps = in.FrameTaps;
+  const float tolerance = 0.1f;
+  // The filtering passes' buffers: the prepare pass's target (the multi-pass
+  // blur ping-pongs between it and the distance map), the single Gaussian's
+  // intermediate, and a depth mask: which blur passes draw a pixel.
+  vtkTextureObject* filtered = screen->GetTexture("contact.filter0", 4);
+  vtkTextureObject* mask = screen->GetTexture("contact.mask", 0);
 
   // The ping-pong pair: the prepare pass's target and the distance map,
   // which holds the final value of every pixel no blur touches. The
   // receivers' texture holds codes (vtkShadowPackTexel()): the prepare pass
   // writes every pixel's, and each multi-pass blur those of the pixels it
   // draws, so that a pixel's last pass leaves its final code there without
-  // a pass of its own. The other variants' last pass writes them all, as
-  // does the debug view's, so there the chain writes none. PCF blurs in one
-  // pass, drawn like a multi-pass blur only where D > 0: a software
-  // rasterizer skips the blocks the depth test empties (most of the screen),
-  // where a branch would still run the kernel's first tap.
-  vtkTextureObject* packed = screen->GetPacked(slot);
-  const bool chainCodes = this->Variant != Gaussian && !this->DebugView;
+  // a pass of its own. The Gaussian's last pass writes them all, as does
+  // the debug view's, so there the chain writes none.
+  const bool chainCodes = this->Variant == MultiPass && !this->DebugView;
   const std::array<vtkTextureObject*, 2> pair = { filtered, distance };
   // A chain target, and the receivers' codes alongside when the chain writes them.
   auto chainTargets = [&](vtkTextureObject* target)
@@ -513,48 +644,18 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
     return chainCodes ? std::vector<vtkTextureObject*>{ target, packed }
                       : std::vector<vtkTextureObject*>{ target };
   };
-
-  // Over every pixel, or (`masked`) only where the prepare pass found D > 0,
-  // the chain having written the other pixels' codes.
+  // Over every pixel.
   auto toPacked = [&](vtkOpenGLQuadHelper* quad, vtkTextureObject* input,
-                    const std::function<void(vtkShaderProgram*)>& uniforms, bool masked = false)
+                    const std::function<void(vtkShaderProgram*)>& uniforms)
   {
-    Targets bound(screen, { packed }, masked ? mask : nullptr);
-    in.Draw(screen, quad, input, uniforms, tolerance, this->DebugView,
-      masked ? vtkShadowScreenBuffers::QuadMask::Test : vtkShadowScreenBuffers::QuadMask::None,
-      1.0f);
+    Targets bound(screen, { packed });
+    in.Draw(screen, quad, input, uniforms, tolerance, this->DebugView);
   };
 
-  // Umbra early-out and pass 3.
   {
     Targets bound(screen, chainTargets(pair[0]), mask);
-    tiles[1]->Activate();
-    in.Draw(
-      screen, in.Prepare, distance,
-      [&](vtkShaderProgram* program)
-      {
-        program->SetUniformi("contactTiles", tiles[1]->GetTextureUnit());
-        program->SetUniformi("contactTileSize", TileSize);
-        program->SetUniformi("contactEarlyOut", this->UmbraEarlyOut ? 1 : 0);
-        program->SetUniformi("contactDilation", this->Dilation ? 1 : 0);
-        // D counts passes (a fraction blends the last in) or kernel pixels.
-        program->SetUniformf("contactSmallestD", this->Variant == MultiPass ? 0.01f : 1.5f);
-        if (this->RefineUnresolved) // CONTACT_WIDTHS
-        {
-          program->SetUniformi("contactCountsPasses", this->Variant == MultiPass ? 1 : 0);
-          program->SetUniformi("contactMaximumKernel", this->MaximumKernelSize);
-          // Summed variances of 0 .. 64 passes (those past the limit add none).
-          std::vector<float> variances(in.PassStarts);
-          variances.push_back(in.PassStarts.back() + 1.0f / in.PassInverseVariances.back());
-          variances.resize(65, variances.back());
-          program->SetUniform1fv("contactPassVariances", 65, variances.data());
-        }
-        const std::vector<float> dilationTaps = ScaledTaps(taps, this->DilationSize);
-        program->SetUniform3fv("contactTaps", this->PoissonTaps, dilationTaps.data());
-        program->SetUniformi("contactTapCount", this->PoissonTaps);
-      },
-      tolerance, this->DebugView, vtkShadowScreenBuffers::QuadMask::Write);
-    tiles[1]->Deactivate();
+    in.Draw(screen, in.Prepare, distance, settling, tolerance, this->DebugView,
+      vtkShadowScreenBuffers::QuadMask::Write);
   }
 
   // Pass 4, then pass 5's visibility.
@@ -628,29 +729,6 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
         program->SetUniformi("contactLastPass", 1);
       });
   }
-  else
-  {
-    // The coarse level for the widest discs, then the discs.
-    const int coarseW = (screen->GetWidth() + 1) / 2;
-    const int coarseH = (screen->GetHeight() + 1) / 2;
-    vtkTextureObject* coarse = screen->GetTexture("contact.coarse", 4, coarseW, coarseH);
-    {
-      Targets bound(screen, { coarse }, nullptr, coarseW, coarseH);
-      in.Draw(
-        screen, in.Coarse, filtered, [](vtkShaderProgram*) {}, tolerance, this->DebugView);
-    }
-    coarse->Activate();
-    toPacked(
-      in.PCF, filtered,
-      [&](vtkShaderProgram* program)
-      {
-        program->SetUniformi("contactMaximumKernel", this->MaximumKernelSize);
-        program->SetUniformi("contactCoarse", coarse->GetTextureUnit());
-      },
-      chainCodes);
-    coarse->Deactivate();
-  }
-  state->PopFramebufferBindings();
 }
 
 //------------------------------------------------------------------------------

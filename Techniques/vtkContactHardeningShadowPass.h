@@ -63,8 +63,9 @@
 #include "vtkSoftShadowPass.h"
 #include "vtkSoftShadowsTechniquesModule.h" // for export macro
 
-#include <memory> // for std::unique_ptr
-#include <vector> // for std::vector
+#include <functional> // for std::function
+#include <memory>     // for std::unique_ptr
+#include <vector>     // for std::vector
 
 class VTKSOFTSHADOWSTECHNIQUES_EXPORT vtkContactHardeningShadowPass : public vtkSoftShadowPass
 {
@@ -258,12 +259,18 @@ private:
 
   /// The multi-pass variant's kernel size in pass `pass` (from 0).
   int KernelSize(int pass) const;
-  /// Pass 2 for lights first, first + 1... into `targets`, drawn with the
-  /// camera depth.
-  bool RenderDistanceMaps(
-    const vtkRenderState* s, size_t first, const std::vector<vtkTextureObject*>& targets);
+  /// Pass 2 for lights first .. first + count - 1 into `targets` (see
+  /// RenderScreenSpace()), drawn with the camera depth.
+  bool RenderDistanceMaps(const vtkRenderState* s, size_t first, size_t count,
+    const std::vector<vtkTextureObject*>& targets);
   /// Early-out, dilation, filtering and the visibility of light `slot`.
   void FilterDistanceMap(vtkOpenGLRenderWindow* context, int slot, vtkTextureObject* distance);
+  /// FilterDistanceMap()'s filtering for the PCF variant, and for the
+  /// blurs; `settling` sets what settling a pixel's D needs.
+  void FilterPCF(vtkTextureObject* distance, vtkTextureObject* tiles, vtkTextureObject* packed,
+    const std::function<void(vtkShaderProgram*)>& settling);
+  void FilterBlurs(vtkTextureObject* distance, vtkTextureObject* packed,
+    const std::function<void(vtkShaderProgram*)>& settling);
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

@@ -1,9 +1,9 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
 // SPDX-License-Identifier: BSD-3-Clause
 // Codes a light's visibility texture for the receivers
-// (vtkShadowPackTexel(), vtkShadowScreenCommonFS.glsl), for techniques that
+// (vtkShadowPackTexel(), vtkShadowScreenCodeFS.glsl), for techniques that
 // draw visibility textures rather than the codes themselves.
-// Uses: vtkShadowScreenCommonFS.glsl.
+// Uses: vtkShadowScreenCommonFS.glsl, vtkShadowScreenCodeFS.glsl.
 uniform sampler2D vtkShadowVisibility;
 
 void main()

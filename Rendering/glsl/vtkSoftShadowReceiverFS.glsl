@@ -126,7 +126,7 @@ float vtkShadowCubeLookupAll(vec4 positionWC, vec3 normalWC, int wanted)
 uniform sampler2D vtkShadowScreen[VTK_SHADOW_LIGHTS];
 uniform vec2 vtkShadowViewportOrigin;
 uniform vec2 vtkShadowScreenScale; // viewport pixels to screen-space texels
-uniform float vtkShadowLogNear;    // see vtkShadowPackTexel(), vtkShadowScreenCommonFS.glsl
+uniform float vtkShadowLogNear;    // see vtkShadowPackTexel(), vtkShadowScreenCodeFS.glsl
 uniform float vtkShadowCodesPerLog;
 
 // What the lookups of all lights share (their textures have one size): the

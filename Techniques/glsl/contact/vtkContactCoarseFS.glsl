@@ -1,10 +1,12 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
 // SPDX-License-Identifier: BSD-3-Clause
-// Between passes 3 and 4, PCF variant: the coarse level its widest discs
-// tap (vtkContactPCFFS.glsl), a texel per 2x2 block of the prepare pass's
-// texels. Of the block's texels on its farthest surface (within the
-// same-surface tolerance of the farthest camera distance): the sum of their
-// visibilities and their count, both over 4, and their mean camera distance.
+// Before pass 4, PCF variant: the coarse level its widest discs tap
+// (vtkContactPCFFS.glsl), a texel per 2x2 block of the distance map's
+// texels (their visibility and distance, which the early-out and the
+// dilation leave as they are). Of the block's texels on its farthest
+// surface (within the same-surface tolerance of the farthest camera
+// distance): the sum of their visibilities and their count, both over 4,
+// and their mean camera distance.
 // A block across a silhouette so keeps the receiver behind it, where an
 // occluder's shadow meets its outline in the view, and drops the occluder's
 // texels (their discs find few other texels near them either); the

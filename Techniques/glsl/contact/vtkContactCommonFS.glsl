@@ -9,10 +9,11 @@
 // pixel's hard side, its penumbra's width; vtkShadowScreenVisibility()),
 // b = the surface's camera distance (0 on background), a = D (<= 0: not
 // blurred).
-// Uses: vtkShadowScreenCommonFS.glsl (vtkShadowPackTexel).
+// Uses: vtkShadowScreenCodeFS.glsl (vtkShadowPackTexel).
 uniform sampler2D contactMap;
 uniform float contactDepthTolerance;
 uniform bool contactDebugView;
+uniform int contactMaximumKernel; // the widest kernel, pixels
 
 vec4 vtkContactFetch(ivec2 pixel)
 {

@@ -16,10 +16,12 @@
 //
 // The pass's choices are compiled in, not uniforms: CONTACT_LIGHT_SIZE (D
 // from the light's size), CONTACT_COUNT_PASSES (D counts multi-pass blurs,
-// at most CONTACT_PASS_LIMIT), and per light whether its map is a
+// at most CONTACT_PASS_LIMIT), CONTACT_CODES (the pass also writes the
+// receivers' codes of settled pixels), and per light whether its map is a
 // perspective one. A software rasterizer runs both arms of a branch, even
 // on a uniform, and this code runs on every fragment the camera draws.
-// Uses: vtkShadowNormalOffsetFS.glsl, vtkShadowCubeLookupFS.glsl.
+// Uses: vtkShadowNormalOffsetFS.glsl, vtkShadowCubeLookupFS.glsl,
+// vtkShadowScreenCodeFS.glsl (with CONTACT_CODES).
 #if CONTACT_MAPS > 0
 uniform sampler2D contactLightDepth[CONTACT_MAPS];
 #endif
@@ -121,6 +123,17 @@ vec4 vtkContactLit()
 {
   return vec4(1.0, 0.0, contactCameraDistance, 0.0);
 }
+
+#if CONTACT_CODES
+// The receivers' code of texel `t` where the PCF pass has no work (a tile
+// all lit, or all umbra with the early-out; vtkContactTileSpreadFS.glsl):
+// not blurred, D dropped, as that pass would settle it. Written here so
+// that the PCF pass draws only the other tiles.
+float vtkContactSettledCode(vec4 t)
+{
+  return vtkShadowPackTexel(vec4(t.r, 0.0, t.b, 0.0));
+}
+#endif
 
 #if CONTACT_MAPS > 0
 vec4 vtkContactDistance(sampler2D map, int k, bool perspective, vec3 positionVC, vec3 normalVC)

@@ -6,7 +6,6 @@
 // The texel just beyond D / 2 counts in part, so the result changes
 // smoothly with D.
 // Uses: vtkShadowScreenCommonFS.glsl, vtkContactCommonFS.glsl.
-uniform int contactMaximumKernel;
 uniform ivec2 contactDirection;
 uniform bool contactLastPass;
 

@@ -8,7 +8,8 @@
 // those still blurring, and those whose D ran out in the pass before, copied
 // so that both ping-pong buffers agree on them from then on. Each also
 // writes its code into the receivers' texture.
-// Uses: vtkShadowScreenCommonFS.glsl, vtkContactCommonFS.glsl.
+// Uses: vtkShadowScreenCommonFS.glsl, vtkShadowScreenCodeFS.glsl,
+// vtkContactCommonFS.glsl.
 uniform vec3 contactTaps[64]; // offsets in pixels (not rounded) for this pass's kernel, and weights
 uniform int contactTapCount;
 uniform float contactKernelSize; // this pass's, in pixels

@@ -5,13 +5,17 @@
 // light's own shape, whose shadow of an edge the penumbra is. Then pass 5's
 // visibility. Texels count by how much of them the disc covers, so the
 // result changes smoothly with D.
+// Reads the distance map (contactMap) and settles each pixel's D itself
+// (vtkContactPrepareTexelFS.glsl): one pass, drawn only over the tiles where
+// there is anything to settle or blur; the camera pass wrote the other
+// tiles' codes (vtkContactHardeningShadowPass::RenderScreenSpace()).
 // Discs reaching at least contactCoarseReach texels from their centre along
 // both screen axes tap the coarse level (vtkContactCoarseFS.glsl) instead: a
 // quarter of the taps, for the edge blurred over two texels instead of one
 // (the RMSE against the ray-cast truth stays as it was on the quality scenes;
 // docs/benchmarks.md).
-// Uses: vtkShadowScreenCommonFS.glsl, vtkContactCommonFS.glsl.
-uniform int contactMaximumKernel;
+// Uses: vtkShadowScreenCommonFS.glsl, vtkContactCommonFS.glsl,
+// vtkContactPrepareTexelFS.glsl.
 uniform sampler2D contactCoarse;
 const float contactCoarseReach = 4.0;
 
@@ -28,7 +32,7 @@ float vtkContactCoverage(vec4 c, vec2 offset, float b, float perPixel, float edg
 void main()
 {
   ivec2 pixel = vtkShadowScreenPixel();
-  vec4 c = vtkContactFetch(pixel);
+  vec4 c = vtkContactPrepareTexel(pixel);
   float v = c.r;
   if (c.a > 0.0)
   {

@@ -1,88 +1,19 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
 // SPDX-License-Identifier: BSD-3-Clause
-// Between passes 2 and 4: the umbra early-out (section 5: D = 0 where the
-// whole neighbourhood is shadowed) and the optional dilation of D (pass 3).
-// Reads the distance map, the other ping-pong buffer, where pixels left
-// unblurred already hold their final value; writes the pixel with its D
-// settled, its code in the receivers' texture (final unless a blur follows),
-// and a depth that lets multi-pass blur k (drawn at depth
+// Between passes 2 and 4, multi-pass and Gaussian variants: every pixel's
+// texel with D settled (vtkContactPrepareTexelFS.glsl), into the other
+// ping-pong buffer (the distance map holds the final value of pixels left
+// unblurred); its code in the receivers' texture (final unless a blur
+// follows); and a depth that lets multi-pass blur k (drawn at depth
 // 1 - k / 256) through only where D > k - 1: the ceil(D) passes that blur the
 // pixel and one more that copies its final value into the other buffer.
 // Elsewhere depth 1: no blur touches it.
-// Both neighbourhood questions are answered by the tile classification
-// (vtkContactTileSpreadFS.glsl) with one fetch: a software rasterizer shades
-// both arms of a branch, but a loop ends once no pixel of a group runs it.
-// Uses: vtkShadowScreenCommonFS.glsl, vtkContactCommonFS.glsl.
-uniform bool contactEarlyOut;
-uniform bool contactDilation;
-uniform vec3 contactTaps[64]; // offsets in pixels over the dilation kernel, and weights
-uniform int contactTapCount;
-uniform sampler2D contactTiles;
-uniform int contactTileSize;
-uniform float contactSmallestD;
-
-#if CONTACT_WIDTHS
-// Compiled in for receivers that refine (vtkContactRefine(), vtkContactUpsampleFS.glsl): the
-// penumbra's width in pixels on the receiver for a D, coded with the
-// pixel. A kernel's (clamped to the maximum), or, counting multi-pass
-// blurs, 4 sigma of their summed variances (contactPassVariances[k]: that
-// of k passes).
-uniform bool contactCountsPasses;
-uniform int contactMaximumKernel;
-uniform float contactPassVariances[65];
-
-float vtkContactWidth(float d)
-{
-  if (contactCountsPasses)
-  {
-    int k = int(min(d, 63.0));
-    return 4.0 * sqrt(mix(contactPassVariances[k], contactPassVariances[k + 1], d - float(k)));
-  }
-  return min(d, float(contactMaximumKernel));
-}
-#endif
-
+// Uses: vtkShadowScreenCommonFS.glsl, vtkShadowScreenCodeFS.glsl,
+// vtkContactCommonFS.glsl, vtkContactPrepareTexelFS.glsl.
 void main()
 {
-  ivec2 pixel = vtkShadowScreenPixel();
-  vec4 c = vtkContactFetch(pixel);
-  float d = c.a;
-  vec2 tiles = texelFetch(contactTiles, pixel / contactTileSize, 0).xy;
-  if (d > 0.0 && contactEarlyOut && tiles.x >= 1.0)
-  {
-    d = 0.0;
-  }
-  else if (c.r == 1.0 && c.b > 0.0 && contactDilation)
-  {
-    // Lit pixels near a shadow take the weighted mean D of the shadowed taps.
-    // D varies slowly: 8 taps are enough (tap 0, this lit pixel, never
-    // counts). None without a shadow in reach.
-    float sum = 0.0;
-    float weights = 0.0;
-    int count = tiles.y > 0.0 ? min(contactTapCount, 8) : 0;
-    for (int i = 1; i < count; ++i)
-    {
-      vec4 t = vtkContactFetch(pixel + ivec2(contactTaps[i].xy));
-      if (t.r < 1.0 && vtkContactSameSurface(c, t))
-      {
-        sum += contactTaps[i].z * t.a;
-        weights += contactTaps[i].z;
-      }
-    }
-    d = weights > 0.0 ? sum / weights : 0.0;
-  }
-  // Below contactSmallestD (a pixel for kernels, a tenth of a pass) a blur
-  // changes nothing worth the pixel's sharper full-resolution hard shadow in
-  // the receivers.
-  d = d >= contactSmallestD ? d : 0.0;
-  // g: blurred, with the flags of the receivers' guided lookup: on which
-  // side of its hard edge the pixel lies, and its penumbra's width.
-#if CONTACT_WIDTHS
-  float flags = c.r + 2.0 * vtkShadowWidthCode(vtkContactWidth(d));
-#else
-  float flags = c.r;
-#endif
-  vec4 texel = vec4(c.r, d > 0.0 ? 1.0 + flags : 0.0, c.b, d);
+  vec4 texel = vtkContactPrepareTexel(vtkShadowScreenPixel());
+  float d = texel.a;
   gl_FragData[0] = texel;
   gl_FragData[1] = vec4(vtkShadowPackTexel(texel));
   gl_FragDepth = d > 0.0 ? 1.0 - (min(ceil(d), 254.0) + 1.0) / 256.0 : 1.0;

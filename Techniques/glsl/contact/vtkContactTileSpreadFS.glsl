@@ -6,9 +6,13 @@
 //   x: least S over the early-out's reach: 1 where all of it is shadowed,
 //   y: greatest S over the dilation's reach: 0 where none of it is.
 // Both err on the safe side: a pixel near a tile's middle sees farther.
+//   a: 1 where the prepare pass has work in the tile, 0 where it would write
+//      what the camera pass wrote already: all lit (no D, nothing to
+//      dilate) or, with the early-out, all umbra (D dropped).
 // Uses: vtkShadowScreenCommonFS.glsl, vtkContactCommonFS.glsl.
 uniform int contactEarlyOutTiles;
 uniform int contactDilationTiles;
+uniform bool contactEarlyOut;
 
 void main()
 {
@@ -29,5 +33,6 @@ void main()
       greatest = max(greatest, vtkContactFetch(tile + ivec2(x, y)).g);
     }
   }
-  gl_FragData[0] = vec4(least, greatest, 0.0, 0.0);
+  bool settled = greatest <= 0.0 || (contactEarlyOut && least >= 1.0);
+  gl_FragData[0] = vec4(least, greatest, 0.0, settled ? 0.0 : 1.0);
 }
