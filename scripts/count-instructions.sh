@@ -13,9 +13,8 @@
 # TECHNIQUE), the difference divided by 4, so start-up, shader compilation
 # and the frame before each technique's block (bench draws a technique's
 # frames in blocks of up to 5) cancel. Each count follows a counted warm-up
-# run of 1 frame: Mesa's shader cache is
-# keyed by the CPU, and the one valgrind presents differs from the
-# machine's. A few minutes a technique.
+# run of 1 frame: Mesa's shader cache is keyed by the CPU, and the one
+# valgrind presents differs from the machine's. A few minutes a technique.
 set -euo pipefail
 
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"

@@ -44,11 +44,11 @@ struct Timing
  * Draws `frames` timed frames of every technique after `warmUp` untimed
  * rounds of all, in blocks of up to 5 frames a technique, each block after
  * an untimed frame of it (the mappers rebuild their shaders when the render
- * pass changes), the techniques taking turns; moves the first light a little
- * along a small orbit before each frame so every technique redraws its
- * shadow maps. A
- * frame's time runs from the start of Render() to glFinish() returning.
- * Leaves the light where it started. Shows its progress on `progress`.
+ * pass changes), the techniques taking turns; moves the first light a
+ * little along a small orbit before each frame so every technique redraws
+ * its shadow maps. A frame's time runs from the start of Render() to
+ * glFinish() returning. Leaves the light where it started. Shows its
+ * progress on `progress`.
  */
 std::vector<Timing> RunBenchmark(vtkRenderWindow* window, vtkRenderer* renderer,
   std::vector<TechniqueInstance>& techniques, int frames, int warmUp, int mapSize,

@@ -63,8 +63,8 @@ Long work shows its progress on stderr when it is a terminal; --quiet hides it.
   view         the scene in a window with VTK's trackball camera; keys cycle
                the techniques, size and move the lights, show the shadow
                alone and save screenshots (h lists them)
-  bench        time the techniques in one window, taking turns in blocks of 5
-               frames, the first light moving; `hard` is added if missing;
+  bench        time the techniques in one window, taking turns in blocks of up
+               to 5 frames, the first light moving; `hard` is added if missing;
                --json prints one JSON object per technique and line
   gallery      render each technique to DIR/<technique>.png, all of them side by
                side, labelled, to DIR/gallery.png, and print their timings
