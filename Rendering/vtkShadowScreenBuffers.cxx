@@ -128,12 +128,14 @@ vtkOpenGLQuadHelper* vtkShadowScreenBuffers::GetQuad(const std::string& name,
   Coverage coverage)
 {
   auto found = this->Quads.find(name);
-  if (found != this->Quads.end() && found->second.Variant == variant)
+  if (found != this->Quads.end() && found->second.Variant == variant &&
+    found->second.Covers == coverage)
   {
     return found->second.Quad.get();
   }
   KeptQuad& kept = this->Quads[name];
   kept.Variant = variant;
+  kept.Covers = coverage;
   kept.Quad = this->CreateQuad(this->Context, source(), coverage);
   if (!kept.Quad->Program)
   {
@@ -197,16 +199,6 @@ void vtkShadowScreenBuffers::DrawTiles(vtkOpenGLQuadHelper* quad, vtkTextureObje
   {
     tiles->Deactivate();
   }
-}
-
-//------------------------------------------------------------------------------
-void vtkShadowScreenBuffers::ClearDepth()
-{
-  vtkOpenGLState* state = this->Context->GetState();
-  vtkOpenGLState::ScopedglDepthMask depthMask(state);
-  state->vtkglDepthMask(GL_TRUE);
-  state->vtkglClearDepth(1.0);
-  state->vtkglClear(GL_DEPTH_BUFFER_BIT);
 }
 
 //------------------------------------------------------------------------------

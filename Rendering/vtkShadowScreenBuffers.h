@@ -79,8 +79,8 @@ public:
   /**
    * A technique's full-screen pass, kept with the buffers as GetTexture()
    * keeps textures: CreateQuad() of `source()` on first use and again when
-   * `variant` (what the source depends on, e.g. a define's value) changes,
-   * released with the buffers; `source` is called only then. nullptr when
+   * `variant` (what the source depends on, e.g. a define's value) or
+   * `coverage` changes, released with the buffers; `source` is called only then. nullptr when
    * it does not build (VTK logs the compiler's output); a variant that
    * failed is not built again, and only that first time is `failed` set.
    */
@@ -120,9 +120,6 @@ public:
   void DrawTiles(vtkOpenGLQuadHelper* quad, vtkTextureObject* tiles, int tileSize,
     const std::function<void(vtkShaderProgram*)>& setUniforms, QuadMask mask = QuadMask::None,
     float quadDepth = 0.5f);
-
-  /// Clear the bound depth target (a QuadMask) to 1, where no quad's test passes.
-  void ClearDepth();
 
   /**
    * Draw into light `slot`'s visibility texture (allocated on demand, the
@@ -302,6 +299,7 @@ private:
   struct KeptQuad
   {
     std::string Variant;
+    Coverage Covers = Coverage::Screen;
     std::unique_ptr<vtkOpenGLQuadHelper> Quad; ///< null when Variant failed
   };
   std::map<std::string, KeptQuad> Quads;

@@ -45,6 +45,9 @@ namespace
 constexpr int MaximumTaps = 64;
 // Pixels (of the distance map) on a side of a classification tile.
 constexpr int TileSize = 8;
+// Taps count as the same surface within this share of the camera distance
+// (vtkContactSameSurface()).
+constexpr float DepthTolerance = 0.1f;
 // vtkShadowPackTexel() of a texel with no surface: not valid (255), distance 0.
 constexpr float NoSurfaceCode = 255.0f * 2048.0f;
 
@@ -114,7 +117,7 @@ public:
   /// A pass over the whole buffer, or with `tiles` only over the tiles
   /// with work (vtkContactTileSpreadFS.glsl).
   void Draw(vtkShadowScreenBuffers* screen, vtkOpenGLQuadHelper* quad, vtkTextureObject* input,
-    const std::function<void(vtkShaderProgram*)>& uniforms, float depthTolerance, bool debugView,
+    const std::function<void(vtkShaderProgram*)>& uniforms, bool debugView,
     vtkShadowScreenBuffers::QuadMask mask = vtkShadowScreenBuffers::QuadMask::None,
     float quadDepth = 0.5f, vtkTextureObject* tiles = nullptr)
   {
@@ -128,7 +131,7 @@ public:
       {
         program->SetUniformi("contactMap", input->GetTextureUnit());
       }
-      program->SetUniformf("contactDepthTolerance", depthTolerance);
+      program->SetUniformf("contactDepthTolerance", DepthTolerance);
       program->SetUniform2f("contactPixelFootprint", screen->GetPixelFootprint());
       program->SetUniformi("contactDebugView", debugView ? 1 : 0);
       uniforms(program);
@@ -241,8 +244,7 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
   in.Prepare = this->GetScreenQuad("contact.prepare", settling(vtkContactPrepareFS), widths);
   in.MultiPass = this->GetScreenQuad("contact.multipass", withCommon(vtkContactMultiPassFS));
   in.Coarse = this->GetScreenQuad("contact.coarse", withCommon(vtkContactCoarseFS));
-  in.PCF = this->GetScreenQuad("contact.pcf", settling(vtkContactPCFFS),
-    widths + (in.CameraCodes ? " tiled" : ""), in.CameraCodes);
+  in.PCF = this->GetScreenQuad("contact.pcf", settling(vtkContactPCFFS), widths, in.CameraCodes);
   in.Gaussian = this->GetScreenQuad("contact.gaussian", withCommon(vtkContactGaussianFS));
   in.Resolve = this->GetScreenQuad("contact.resolve", withCommon(vtkContactResolveFS));
   if (!in.Tiles || !in.TileSpread || !in.Prepare || !in.MultiPass || !in.Coarse || !in.PCF ||
@@ -501,7 +503,6 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
                                                      "contact.tiles0", 4, tilesW, tilesH),
     screen->GetTexture("contact.tiles1", 4, tilesW, tilesH) };
   const std::vector<float>& taps = in.FrameTaps;
-  const float tolerance = 0.1f;
 
   vtkOpenGLState* state = context->GetState();
   vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
@@ -521,7 +522,7 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
         program->SetUniformi("contactMap", distance->GetTextureUnit());
         program->SetUniformi("contactTileSize", TileSize);
       },
-      tolerance, this->DebugView);
+      this->DebugView);
   }
   {
     Targets bound(screen, { tiles[1] }, nullptr, tilesW, tilesH);
@@ -535,7 +536,7 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
         program->SetUniformi("contactDilationTiles", (dilationReach + TileSize - 1) / TileSize);
         program->SetUniformi("contactEarlyOut", this->UmbraEarlyOut ? 1 : 0);
       },
-      tolerance, this->DebugView);
+      this->DebugView);
   }
 
   // Umbra early-out and pass 3 (vtkContactPrepareTexelFS.glsl): what the
@@ -589,14 +590,13 @@ void vtkContactHardeningShadowPass::FilterPCF(vtkTextureObject* distance, vtkTex
   vtkInternals& in = *this->Internals;
   vtkShadowScreenBuffers* screen = this->Screen.get();
   using Targets = vtkShadowScreenBuffers::Targets;
-  const float tolerance = 0.1f;
   const int coarseW = (screen->GetWidth() + 1) / 2;
   const int coarseH = (screen->GetHeight() + 1) / 2;
   vtkTextureObject* coarse = screen->GetTexture("contact.coarse", 4, coarseW, coarseH);
   {
     Targets bound(screen, { coarse }, nullptr, coarseW, coarseH);
     in.Draw(
-      screen, in.Coarse, distance, [](vtkShaderProgram*) {}, tolerance, this->DebugView);
+      screen, in.Coarse, distance, [](vtkShaderProgram*) {}, this->DebugView);
   }
   coarse->Activate();
   {
@@ -608,7 +608,7 @@ void vtkContactHardeningShadowPass::FilterPCF(vtkTextureObject* distance, vtkTex
         settling(program);
         program->SetUniformi("contactCoarse", coarse->GetTextureUnit());
       },
-      tolerance, this->DebugView, vtkShadowScreenBuffers::QuadMask::None, 0.5f,
+      this->DebugView, vtkShadowScreenBuffers::QuadMask::None, 0.5f,
       in.CameraCodes ? tiles : nullptr);
   }
   coarse->Deactivate();
@@ -622,7 +622,6 @@ void vtkContactHardeningShadowPass::FilterBlurs(vtkTextureObject* distance,
   vtkShadowScreenBuffers* screen = this->Screen.get();
   using Targets = vtkShadowScreenBuffers::Targets;
   const std::vector<float>& taps = in.FrameTaps;
-  const float tolerance = 0.1f;
   // The filtering passes' buffers: the prepare pass's target (the multi-pass
   // blur ping-pongs between it and the distance map), the single Gaussian's
   // intermediate, and a depth mask: which blur passes draw a pixel.
@@ -649,12 +648,12 @@ void vtkContactHardeningShadowPass::FilterBlurs(vtkTextureObject* distance,
                     const std::function<void(vtkShaderProgram*)>& uniforms)
   {
     Targets bound(screen, { packed });
-    in.Draw(screen, quad, input, uniforms, tolerance, this->DebugView);
+    in.Draw(screen, quad, input, uniforms, this->DebugView);
   };
 
   {
     Targets bound(screen, chainTargets(pair[0]), mask);
-    in.Draw(screen, in.Prepare, distance, settling, tolerance, this->DebugView,
+    in.Draw(screen, in.Prepare, distance, settling, this->DebugView,
       vtkShadowScreenBuffers::QuadMask::Write);
   }
 
@@ -692,7 +691,7 @@ void vtkContactHardeningShadowPass::FilterBlurs(vtkTextureObject* distance,
             program->SetUniformi("contactTapCount", this->PoissonTaps);
             program->SetUniformf("contactKernelSize", static_cast<float>(size));
           },
-          tolerance, this->DebugView, vtkShadowScreenBuffers::QuadMask::Test,
+          this->DebugView, vtkShadowScreenBuffers::QuadMask::Test,
           1.0f - static_cast<float>(pass) / 256.0f);
       }
       glEndQuery(GL_SAMPLES_PASSED);
@@ -719,7 +718,7 @@ void vtkContactHardeningShadowPass::FilterBlurs(vtkTextureObject* distance,
           program->SetUniform2i("contactDirection", std::array<int, 2>{ 1, 0 }.data());
           program->SetUniformi("contactLastPass", 0);
         },
-        tolerance, this->DebugView);
+        this->DebugView);
     }
     toPacked(in.Gaussian, rows,
       [&](vtkShaderProgram* program)
