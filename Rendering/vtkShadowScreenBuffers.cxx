@@ -400,6 +400,14 @@ bool vtkShadowScreenBuffers::SupportsSamplers() const
 }
 
 //------------------------------------------------------------------------------
+bool vtkShadowScreenBuffers::SupportsTiles(int tileSize) const
+{
+  GLfloat range[2] = { 1.0f, 1.0f };
+  glGetFloatv(GL_POINT_SIZE_RANGE, range);
+  return range[1] >= static_cast<float>(tileSize);
+}
+
+//------------------------------------------------------------------------------
 void vtkShadowScreenBuffers::CreateSamplers()
 {
   if (this->RawDepthSampler)

@@ -182,6 +182,10 @@ public:
   /// Whether the context has sampler objects (OpenGL 3.3), which Sampler needs.
   bool SupportsSamplers() const;
 
+  /// Whether DrawTiles() can draw tiles of `tileSize` pixels: OpenGL
+  /// guarantees points of only 1 pixel (GL_POINT_SIZE_RANGE).
+  bool SupportsTiles(int tileSize) const;
+
   /**
    * A texture activated and read through one of the framework's sampler
    * objects for as long as it lives: a depth map as raw depths (no

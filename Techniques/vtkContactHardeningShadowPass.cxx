@@ -240,7 +240,10 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
     return withCommon(std::string(vtkContactPrepareTexelFS) + "\n" + source,
       "#define CONTACT_WIDTHS " + widths + "\n");
   };
-  in.CameraCodes = this->Variant == PCF && !this->DebugView;
+  // Without points a tile wide, PCF is drawn over every pixel, as for the
+  // debug view, with the same result.
+  in.CameraCodes =
+    this->Variant == PCF && !this->DebugView && this->Screen->SupportsTiles(TileSize);
   in.Prepare = this->GetScreenQuad("contact.prepare", settling(vtkContactPrepareFS), widths);
   in.MultiPass = this->GetScreenQuad("contact.multipass", withCommon(vtkContactMultiPassFS));
   in.Coarse = this->GetScreenQuad("contact.coarse", withCommon(vtkContactCoarseFS));
