@@ -142,7 +142,7 @@ void vtkShadowReceiverStage::PostReplace(vtkShadowShaderSources& sources)
         << "#define VTK_SHADOW_PCF_BILINEAR " << (frame.PCFBilinear ? 1 : 0) << "\n";
     if (frame.Screen)
     {
-      dec << "#define VTK_SHADOW_SCREEN_SPACE\n";
+      dec << "#define VTK_SHADOW_SCREEN_SPACE\n" << frame.Screen->GetLayoutDeclarations();
     }
     dec << vtkShadowSurfaceFS << "\n"
         << GetLightSpaceLookupCode() << vtkSoftShadowReceiverFS << "\n";
@@ -218,7 +218,8 @@ bool vtkShadowReceiverStage::GetCodeKey(std::string& key) const
   std::ostringstream k;
   k << (frame.Screen ? 1 : 0) << ' ' << frame.TextureUnits << ' ' << frame.TexturesPerFrame << ' '
     << frame.TexturesPerLight << ' ' << frame.ShadowOnlyLight << ' ' << frame.Technique << ' '
-    << frame.ShadingKey << ' ' << frame.PCFRadius << ' ' << frame.PCFBilinear << '\n';
+    << frame.ShadingKey << ' ' << frame.PCFRadius << ' ' << frame.PCFBilinear << '\n'
+    << (frame.Screen ? frame.Screen->GetLayoutDeclarations() : std::string()) << '\n';
   for (const std::string& extension : frame.Extensions)
   {
     k << extension << ' ';

@@ -28,6 +28,7 @@
 
 #include <algorithm> // for std::any_of, std::fill, std::max, std::none_of
 #include <cmath>     // for std::log2, std::tan
+#include <sstream>
 #include <string>
 
 vtkShadowScreenBuffers::vtkShadowScreenBuffers() = default;
@@ -569,6 +570,21 @@ void vtkShadowScreenBuffers::DeactivateTextures()
   {
     texture->Deactivate();
   }
+}
+
+//------------------------------------------------------------------------------
+std::string vtkShadowScreenBuffers::GetLayoutDeclarations() const
+{
+  if (this->Width * this->Divisor != this->ViewportSize[0] ||
+    this->Height * this->Divisor != this->ViewportSize[1])
+  {
+    return std::string();
+  }
+  std::ostringstream dec;
+  dec << "#define VTK_SHADOW_SCREEN_DIVISOR " << this->Divisor << ".0\n"
+      << "#define VTK_SHADOW_SCREEN_ORIGIN vec2(" << this->Origin[0] << ".0, " << this->Origin[1]
+      << ".0)\n";
+  return dec.str();
 }
 
 //------------------------------------------------------------------------------

@@ -257,6 +257,16 @@ public:
   void ActivateTextures();
   void DeactivateTextures();
   void SetUniforms(vtkShaderProgram* program, int numberOfLights) const;
+  /**
+   * The receivers' declarations of the buffers' layout this frame. Where
+   * the buffers divide the viewport exactly (its size a multiple of the
+   * divisor), the divisor and the viewport's origin are compiled in and
+   * receivers read no uniform for them: llvmpipe loads a uniform for every
+   * fragment that reads it. Otherwise nothing, and they read the uniforms
+   * SetUniforms() sets. (A window resized between sizes that are and are
+   * not multiples switches between two cached shaders.)
+   */
+  std::string GetLayoutDeclarations() const;
   ///@}
 
   void ReleaseGraphicsResources(vtkWindow* w);

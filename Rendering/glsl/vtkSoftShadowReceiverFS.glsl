@@ -140,12 +140,25 @@ float vtkShadowScreenFragment;
 float vtkShadowScreenTolerance;
 vec2 vtkShadowScreenCodeRange; // the least and the greatest code on its surface
 uniform vec2 vtkShadowTexelFootprint; // a texel's world size: x + y * camera distance
+// The viewport's origin and its pixels per texel: compiled in where the
+// buffers divide the viewport exactly
+// (vtkShadowScreenBuffers::GetLayoutDeclarations()), as llvmpipe loads a
+// uniform for every fragment (a few instructions a component).
+#ifdef VTK_SHADOW_SCREEN_DIVISOR
+const vec2 vtkShadowScreenOrigin = VTK_SHADOW_SCREEN_ORIGIN;
+const vec2 vtkShadowScreenPixels = vec2(VTK_SHADOW_SCREEN_DIVISOR);
+const vec2 vtkShadowScreenTexels = vec2(1.0 / VTK_SHADOW_SCREEN_DIVISOR);
+#else
+#define vtkShadowScreenOrigin vtkShadowViewportOrigin
+#define vtkShadowScreenPixels (1.0 / vtkShadowScreenScale)
+#define vtkShadowScreenTexels vtkShadowScreenScale
+#endif
 
 void vtkShadowScreenSetup(vec3 positionVC)
 {
   // Clamped to the texel centres at the edges, as bilinear filtering clamps.
   vec2 size = vec2(textureSize(vtkShadowScreen[0], 0));
-  vec2 p = clamp((gl_FragCoord.xy - vtkShadowViewportOrigin) * vtkShadowScreenScale - 0.5,
+  vec2 p = clamp((gl_FragCoord.xy - vtkShadowScreenOrigin) * vtkShadowScreenTexels - 0.5,
     vec2(0.0), size - 1.0);
   vec2 f = fract(p);
   vtkShadowScreenCorner = (floor(p) + 1.0) / size;
@@ -161,7 +174,7 @@ void vtkShadowScreenSetup(vec3 positionVC)
   // own, so they never cross a silhouette.)
   vec2 slope = vec2(dFdx(vtkShadowScreenFragment), dFdy(vtkShadowScreenFragment));
   vtkShadowScreenTolerance =
-    0.0286 * vtkShadowCodesPerLog + 0.5 + dot(abs(slope), 1.0 / vtkShadowScreenScale);
+    0.0286 * vtkShadowCodesPerLog + 0.5 + dot(abs(slope), vtkShadowScreenPixels);
   // As the codes a texel may have, 0 (the background) excluded: one range
   // for all lights.
   vtkShadowScreenCodeRange = vec2(max(vtkShadowScreenFragment - vtkShadowScreenTolerance, 0.5),

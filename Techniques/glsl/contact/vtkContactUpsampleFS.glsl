@@ -19,8 +19,8 @@ void vtkContactScreenSetup(vec3 positionVC)
 {
   vtkContactTexelSize =
     vtkShadowTexelFootprint.x + vtkShadowTexelFootprint.y * vtkShadowScreenCameraDistance;
-  vec3 stepX = dFdx(positionVC) / vtkShadowScreenScale.x;
-  vec3 stepY = dFdy(positionVC) / vtkShadowScreenScale.y;
+  vec3 stepX = dFdx(positionVC) * vtkShadowScreenPixels.x;
+  vec3 stepY = dFdy(positionVC) * vtkShadowScreenPixels.y;
   vtkContactLongestStep2 = max(dot(stepX, stepX), dot(stepY, stepY));
 }
 #endif
@@ -78,7 +78,7 @@ vec4 vtkContactTap(vec4 positionWC, vec3 normalWC, int n)
   float b = v.x * v.y * a;
   vec3 t1 = vec3(1.0 + s * v.x * v.x * a, s * b, -s * v.x);
   vec3 t2 = vec3(b, s + v.y * v.y * a, -v.y);
-  vec2 pixel = floor(gl_FragCoord.xy - vtkShadowViewportOrigin);
+  vec2 pixel = floor(gl_FragCoord.xy - vtkShadowScreenOrigin);
   float angle = 2.3999632 * float(n) +
     6.2831853 * fract(52.982919 * fract(dot(pixel, vec2(0.06711056, 0.00583715))));
   float radius = vtkContactRadius * sqrt((float(n) + 0.5) / 16.0);
