@@ -17,20 +17,18 @@ uniform bool contactEarlyOut;
 void main()
 {
   ivec2 tile = ivec2(texCoord * vec2(textureSize(contactMap, 0)));
+  // One loop over both reaches: each tile is fetched once.
+  int reach = max(contactEarlyOutTiles, contactDilationTiles);
   float least = 1.0;
-  for (int y = -contactEarlyOutTiles; y <= contactEarlyOutTiles; ++y)
-  {
-    for (int x = -contactEarlyOutTiles; x <= contactEarlyOutTiles; ++x)
-    {
-      least = min(least, vtkContactFetch(tile + ivec2(x, y)).r);
-    }
-  }
   float greatest = 0.0;
-  for (int y = -contactDilationTiles; y <= contactDilationTiles; ++y)
+  for (int y = -reach; y <= reach; ++y)
   {
-    for (int x = -contactDilationTiles; x <= contactDilationTiles; ++x)
+    for (int x = -reach; x <= reach; ++x)
     {
-      greatest = max(greatest, vtkContactFetch(tile + ivec2(x, y)).g);
+      vec2 t = vtkContactFetch(tile + ivec2(x, y)).rg;
+      int apart = max(abs(x), abs(y));
+      least = apart <= contactEarlyOutTiles ? min(least, t.x) : least;
+      greatest = apart <= contactDilationTiles ? max(greatest, t.y) : greatest;
     }
   }
   bool settled = greatest <= 0.0 || (contactEarlyOut && least >= 1.0);
