@@ -47,11 +47,16 @@ bool vtkShadowScreenBuffers::Update(const vtkRenderState* s)
   {
     this->ReleaseGraphicsResources(this->Context);
     this->Context = context;
+    // A constant of the context: asked once, not each frame.
+    GLfloat range[2] = { 1.0f, 1.0f };
+    glGetFloatv(GL_POINT_SIZE_RANGE, range);
+    this->MaximumPointSize = range[1];
   }
   renderer->GetTiledSizeAndOrigin(
     this->ViewportSize, this->ViewportSize + 1, this->Origin, this->Origin + 1);
   this->Width = (this->ViewportSize[0] + this->Divisor - 1) / this->Divisor;
   this->Height = (this->ViewportSize[1] + this->Divisor - 1) / this->Divisor;
+  this->UpdateLayoutDeclarations();
 
   if (!this->CameraDepth)
   {
@@ -403,9 +408,7 @@ bool vtkShadowScreenBuffers::SupportsSamplers() const
 //------------------------------------------------------------------------------
 bool vtkShadowScreenBuffers::SupportsTiles(int tileSize) const
 {
-  GLfloat range[2] = { 1.0f, 1.0f };
-  glGetFloatv(GL_POINT_SIZE_RANGE, range);
-  return range[1] >= static_cast<float>(tileSize);
+  return this->MaximumPointSize >= static_cast<float>(tileSize);
 }
 
 //------------------------------------------------------------------------------
@@ -573,18 +576,19 @@ void vtkShadowScreenBuffers::DeactivateTextures()
 }
 
 //------------------------------------------------------------------------------
-std::string vtkShadowScreenBuffers::GetLayoutDeclarations() const
+void vtkShadowScreenBuffers::UpdateLayoutDeclarations()
 {
+  this->LayoutDeclarations.clear();
   if (this->Width * this->Divisor != this->ViewportSize[0] ||
     this->Height * this->Divisor != this->ViewportSize[1])
   {
-    return std::string();
+    return;
   }
   std::ostringstream dec;
   dec << "#define VTK_SHADOW_SCREEN_DIVISOR " << this->Divisor << ".0\n"
       << "#define VTK_SHADOW_SCREEN_ORIGIN vec2(" << this->Origin[0] << ".0, " << this->Origin[1]
       << ".0)\n";
-  return dec.str();
+  this->LayoutDeclarations = dec.str();
 }
 
 //------------------------------------------------------------------------------

@@ -264,15 +264,16 @@ public:
    * receivers read no uniform for them: llvmpipe loads a uniform for every
    * fragment that reads it. Otherwise nothing, and they read the uniforms
    * SetUniforms() sets. (A window resized between sizes that are and are
-   * not multiples switches between two cached shaders.)
+   * not multiples switches between two cached shaders.) Set by Update().
    */
-  std::string GetLayoutDeclarations() const;
+  const std::string& GetLayoutDeclarations() const { return this->LayoutDeclarations; }
   ///@}
 
   void ReleaseGraphicsResources(vtkWindow* w);
 
 private:
   void CreateSamplers();
+  void UpdateLayoutDeclarations();
   /// DrawQuad() and DrawTiles(): the state and uniforms around `draw`.
   void DrawPass(vtkShaderProgram* program,
     const std::function<void(vtkShaderProgram*)>& setUniforms, QuadMask mask, float quadDepth,
@@ -297,6 +298,8 @@ private:
   int ViewportSize[2] = { 0, 0 };
   double CameraPosition[3] = { 0.0, 0.0, 0.0 };
   int Origin[2] = { 0, 0 };
+  std::string LayoutDeclarations; // see GetLayoutDeclarations()
+  float MaximumPointSize = 1.0f;  // GL_POINT_SIZE_RANGE's upper end, per context
   float ClipToWorld[16];
   vtkSmartPointer<vtkTextureObject> CameraDepth;
   std::vector<vtkSmartPointer<vtkTextureObject>> Visibility;
