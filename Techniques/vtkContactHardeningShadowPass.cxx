@@ -475,6 +475,9 @@ void vtkContactHardeningShadowPass::SetDistanceMapUniforms(vtkShaderProgram* pro
         program, "contact", index, in.CameraPassLookups[in.CameraPassFirst + k]);
       const glm::vec2 range(light.Map.Near, light.Map.Far);
       program->SetUniform2f(("contactDepthRange" + index).c_str(), glm::value_ptr(range));
+      const double span = light.Map.Far - light.Map.Near;
+      const glm::vec2 parallel(span, span * light.GetSize());
+      program->SetUniform2f(("contactParallelScale" + index).c_str(), glm::value_ptr(parallel));
     }
     program->SetUniformf(("contactLightSize" + index).c_str(), static_cast<float>(light.GetSize()));
   }

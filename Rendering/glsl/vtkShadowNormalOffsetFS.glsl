@@ -53,3 +53,15 @@ bool vtkShadowOffsetInMap(mat4 viewToMap, vec4 light, vec4 offset, vec3 position
     max(abs(dot(normalVC, toLight)), 0.25 * sqrt(dot(toLight, toLight)));
   return vtkShadowInMap(viewToMap, vec4(positionVC + along * toLight, 1.0), map);
 }
+
+// The same for a parallel map, where light.w = 0, offset.xyz = 0 and the
+// matrix's last row is (0, 0, 0, 1): the same result, reading only the
+// uniform components that vary (llvmpipe loads each component read, for
+// every fragment). toLight: light.xyz; offset: offset.w.
+bool vtkShadowParallelOffsetInMap(
+  mat4 viewToMap, vec3 toLight, float offset, vec3 positionVC, vec3 normalVC, out vec3 map)
+{
+  float along = offset / max(abs(dot(normalVC, toLight)), 0.25 * sqrt(dot(toLight, toLight)));
+  map = (viewToMap * vec4(positionVC + along * toLight, 1.0)).xyz;
+  return all(greaterThanEqual(map, vec3(0.0))) && all(lessThanEqual(map, vec3(1.0)));
+}

@@ -33,6 +33,9 @@ uniform mat4 contactViewToMap[CONTACT_LIGHTS];
 uniform vec4 contactLightVC[CONTACT_LIGHTS];
 uniform vec4 contactOffsetVC[CONTACT_LIGHTS];
 uniform vec2 contactDepthRange[CONTACT_LIGHTS]; // near, far
+// Parallel maps: a unit of depth in world lengths (far - near), and that
+// times the light's size (a depth difference to the penumbra's width).
+uniform vec2 contactParallelScale[CONTACT_LIGHTS];
 uniform vec3 contactCubeCenter[CONTACT_LIGHTS];
 uniform float contactCubeRange[CONTACT_LIGHTS];
 uniform float contactLightSize[CONTACT_LIGHTS]; // spot, point: diameter; directional: 2 tan(angular radius)
@@ -48,12 +51,12 @@ uniform float contactDistanceMultiplier;
 uniform float contactResolutionDivisor; // viewport pixels per pixel of the buffers
 #endif
 
-// Distance along a 2D map's axis for its depth in [0,1].
-float vtkContactLightDistance(int k, float depth, bool perspective)
+// Distance along a perspective map's axis for its depth in [0,1].
+float vtkContactLightDistance(int k, float depth)
 {
   float n = contactDepthRange[k].x;
   float f = contactDepthRange[k].y;
-  return perspective ? n * f / (f - depth * (f - n)) : n + depth * (f - n);
+  return n * f / (f - depth * (f - n));
 }
 
 #if CONTACT_LIGHT_SIZE && CONTACT_COUNT_PASSES
@@ -99,13 +102,12 @@ void vtkContactCameraSetup(vec3 positionVC)
 #endif
 }
 
-// The texel of light `k` for a shadowed fragment.
-vec4 vtkContactShadowed(int k, float receiverDistance, float blockerDistance, bool perspective)
+// The texel for a shadowed fragment: from the occluder's distance, or with
+// the light's size from the penumbra's world width.
+vec4 vtkContactShadowed(float occluderDistance, float width)
 {
-  float occluderDistance = max(receiverDistance - blockerDistance, 0.0);
 #if CONTACT_LIGHT_SIZE
-  float world = occluderDistance * contactLightSize[k] / (perspective ? blockerDistance : 1.0);
-  float d = world * contactPixelsPerLength;
+  float d = width * contactPixelsPerLength;
 #if CONTACT_COUNT_PASSES
   d = vtkContactPassesFor(d);
 #endif
@@ -117,6 +119,15 @@ vec4 vtkContactShadowed(int k, float receiverDistance, float blockerDistance, bo
     (CONTACT_COUNT_PASSES > 0 ? contactResolutionDivisor * contactResolutionDivisor : contactResolutionDivisor);
 #endif
   return vec4(0.0, 0.0, contactCameraDistance, d);
+}
+
+// Light `k`'s texel for a shadowed fragment, from the receiver's and the
+// blocker's distances along the light's axis (or to a point light).
+vec4 vtkContactShadowed(int k, float receiverDistance, float blockerDistance)
+{
+  float occluderDistance = max(receiverDistance - blockerDistance, 0.0);
+  return vtkContactShadowed(
+    occluderDistance, occluderDistance * contactLightSize[k] / blockerDistance);
 }
 
 vec4 vtkContactLit()
@@ -139,8 +150,12 @@ float vtkContactSettledCode(vec4 t)
 vec4 vtkContactDistance(sampler2D map, int k, bool perspective, vec3 positionVC, vec3 normalVC)
 {
   vec3 p;
-  if (!vtkShadowOffsetInMap(
-        contactViewToMap[k], contactLightVC[k], contactOffsetVC[k], positionVC, normalVC, p))
+  bool inMap = perspective
+    ? vtkShadowOffsetInMap(
+        contactViewToMap[k], contactLightVC[k], contactOffsetVC[k], positionVC, normalVC, p)
+    : vtkShadowParallelOffsetInMap(
+        contactViewToMap[k], contactLightVC[k].xyz, contactOffsetVC[k].w, positionVC, normalVC, p);
+  if (!inMap)
   {
     return vtkContactLit();
   }
@@ -149,8 +164,16 @@ vec4 vtkContactDistance(sampler2D map, int k, bool perspective, vec3 positionVC,
   {
     return vtkContactLit();
   }
-  return vtkContactShadowed(k, vtkContactLightDistance(k, p.z, perspective),
-    vtkContactLightDistance(k, blockerDepth, perspective), perspective);
+  if (!perspective)
+  {
+    // Depth is linear in distance: near cancels, and the rest folds into
+    // one uniform a use.
+    float depth = max(p.z - blockerDepth, 0.0);
+    return vtkContactShadowed(
+      depth * contactParallelScale[k].x, depth * contactParallelScale[k].y);
+  }
+  return vtkContactShadowed(k, vtkContactLightDistance(k, p.z),
+    vtkContactLightDistance(k, blockerDepth));
 }
 #endif
 
@@ -165,6 +188,6 @@ vec4 vtkContactDistance(samplerCube cube, int k, vec4 positionWC, vec3 normal)
   {
     return vtkContactLit();
   }
-  return vtkContactShadowed(k, length(direction), sqrt(stored), true);
+  return vtkContactShadowed(k, length(direction), sqrt(stored));
 }
 #endif
