@@ -136,6 +136,12 @@ void vtkShadowReceiverStage::PostReplace(vtkShadowShaderSources& sources)
     const auto cubes = std::count_if(lights.begin(), lights.begin() + count,
       [](const vtkShadowMapManager::Light& l) { return l.Point; });
     dec << "#define VTK_SHADOW_LIGHTS " << count << "\n"
+        << "#define VTK_SHADOW_PARALLEL bool[](";
+    for (size_t slot = 0; slot < count; ++slot)
+    {
+      dec << (slot > 0 ? ", " : "") << (lights[slot].Directional ? "true" : "false");
+    }
+    dec << ")\n"
         << "#define VTK_SHADOW_MAPS " << count - cubes << "\n"
         << "#define VTK_SHADOW_CUBES " << cubes << "\n"
         << "#define VTK_SHADOW_PCF_RADIUS " << frame.PCFRadius << "\n"
@@ -227,7 +233,8 @@ bool vtkShadowReceiverStage::GetCodeKey(std::string& key) const
   const auto& lights = frame.Maps->GetLights();
   for (const auto& light : lights)
   {
-    k << light.ShaderIndex << ':' << light.SceneIndex << ':' << light.Point << ' ';
+    k << light.ShaderIndex << ':' << light.SceneIndex << ':' << light.Point << light.Directional
+      << ' ';
   }
   k << '\n' << frame.Code.Declarations << '\n' << frame.Code.Setup << '\n';
   for (const auto& texture : frame.Code.Textures)

@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Shadow term of the receivers' fragment shaders, shared by every technique.
 // Inserted by vtkSoftShadowPass after VTK_SHADOW_LIGHTS (number of shadowed
-// lights), VTK_SHADOW_MAPS and VTK_SHADOW_CUBES (how many of them have a 2D
+// lights), VTK_SHADOW_PARALLEL (bool[](...), whether each has a parallel
+// map), VTK_SHADOW_MAPS and VTK_SHADOW_CUBES (how many of them have a 2D
 // map, a cube map), VTK_SHADOW_PCF_RADIUS and VTK_SHADOW_PCF_BILINEAR (the
 // hard lookup's kernel) and, for screen-space techniques,
 // VTK_SHADOW_SCREEN_SPACE are defined. Sampler arrays are indexed with
@@ -34,13 +35,21 @@ vec4 vtkShadowReceiver(int i, vec4 positionWC, vec3 normalWC)
     vtkShadowFootprint[i], vtkShadowNormalBias);
 }
 
+// Which lights have a parallel map (directional lights), compiled in
+// (VTK_SHADOW_PARALLEL): with the index a constant, each lookup keeps only
+// its own kind's code, and a parallel one reads 8 uniform components fewer.
+const bool vtkShadowParallel[VTK_SHADOW_LIGHTS] = VTK_SHADOW_PARALLEL;
+
 // Light i's map coordinates where a receiver at a view-space point looks
 // its map up (vtkShadowReceiver(), then the map's projection), and whether
 // they lie in the map.
 bool vtkShadowReceiverInMap(int i, vec3 positionVC, vec3 normalVC, out vec3 map)
 {
-  return vtkShadowOffsetInMap(vtkShadowViewToMap[i], vtkShadowLightVC[i], vtkShadowOffsetVC[i],
-    positionVC, normalVC, map);
+  return vtkShadowParallel[i]
+    ? vtkShadowParallelOffsetInMap(vtkShadowViewToMap[i], vtkShadowLightVC[i].xyz,
+        vtkShadowOffsetVC[i].w, positionVC, normalVC, map)
+    : vtkShadowOffsetInMap(vtkShadowViewToMap[i], vtkShadowLightVC[i], vtkShadowOffsetVC[i],
+        positionVC, normalVC, map);
 }
 
 // Hard shadow: the fraction of depth comparisons that pass around the
