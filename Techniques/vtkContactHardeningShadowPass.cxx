@@ -473,11 +473,18 @@ void vtkContactHardeningShadowPass::SetDistanceMapUniforms(vtkShaderProgram* pro
         ("contactLightDepth[" + std::to_string(maps++) + "]").c_str(), in.CameraPassUnits[k]);
       vtkShadowMapManager::SetViewLookupUniforms(
         program, "contact", index, in.CameraPassLookups[in.CameraPassFirst + k]);
-      const glm::vec2 range(light.Map.Near, light.Map.Far);
-      program->SetUniform2f(("contactDepthRange" + index).c_str(), glm::value_ptr(range));
-      const double span = light.Map.Far - light.Map.Near;
-      const glm::vec2 parallel(span, span * light.GetSize());
-      program->SetUniform2f(("contactParallelScale" + index).c_str(), glm::value_ptr(parallel));
+      // Each kind of map reads one of these (vtkContactDistance()).
+      if (light.Directional)
+      {
+        const double span = light.Map.Far - light.Map.Near;
+        const glm::vec2 parallel(span, span * light.GetSize());
+        program->SetUniform2f(("contactParallelScale" + index).c_str(), glm::value_ptr(parallel));
+      }
+      else
+      {
+        const glm::vec2 range(light.Map.Near, light.Map.Far);
+        program->SetUniform2f(("contactDepthRange" + index).c_str(), glm::value_ptr(range));
+      }
     }
     program->SetUniformf(("contactLightSize" + index).c_str(), static_cast<float>(light.GetSize()));
   }
