@@ -21,8 +21,16 @@ uniform vec4 silhouetteLookupScale[VTK_SHADOW_LIGHTS];
 uniform float silhouetteMapSize;
 uniform float silhouetteSpread;     // the three outer samples' distance, in penumbra half-widths
 uniform vec2 silhouetteLookupSegment; // a segment's scale and first centre, T texels each: (T - 1) / 4T, 1 / 8T
-// Where section 2.2.1's three outer samples lie, in units of their reach.
-const vec2 silhouetteAround[3] = vec2[3](vec2(0.0, 1.0), vec2(-0.8660254, -0.5), vec2(0.8660254, -0.5));
+// Where section 2.2.1's three outer samples lie, in units of their reach:
+// (0, 1), then each turned by 120 degrees from the one before. Turned, not
+// read from an array, whose size would tell the compiler the loop's most
+// iterations, and have it unrolled into three samples that run for every
+// pixel (silhouetteOuterSamples()).
+const vec2 silhouetteFirstAround = vec2(0.0, 1.0);
+vec2 silhouetteNextAround(vec2 d)
+{
+  return vec2(-0.5 * d.x - 0.8660254 * d.y, 0.8660254 * d.x - 0.5 * d.y);
+}
 
 // Eq. 4 and, for soft shadows, the row of the penumbra's width: the
 // visibility of a sample given its distance and silhouette depth (edge), its
@@ -100,6 +108,14 @@ bool silhouetteNone(vec4 d4, int i)
 // take its silhouette's depth (`own` false) rather than gather their own,
 // which spares a third of a soft sample's texture reads and leaves the
 // error against the ray-cast truth as it was (docs/benchmarks.md).
+// They are taken only where the point's own sample lies in a penumbra
+// (width > 0): elsewhere their reach is 0 and they would repeat it. A loop
+// whose count varies runs once, masked, for a group of pixels none of which
+// enters it, where three unrolled samples ran for every pixel.
+int silhouetteOuterSamples(float width)
+{
+  return width > 0.0 ? 3 : 0;
+}
 
 #if VTK_SHADOW_MAPS > 0
 // One sample at map point p of a spot or directional light; `depth`, its
@@ -149,13 +165,15 @@ float silhouetteVisibility(sampler2DShadow map, sampler2D silhouettes, sampler2D
     return visibility;
   }
   float reach = silhouetteSpread * width / silhouetteMapSize;
-  for (int k = 0; k < 3; ++k)
+  vec2 around = silhouetteFirstAround;
+  for (int k = 0; k < silhouetteOuterSamples(width); ++k)
   {
     float unused;
-    visibility += silhouetteSample(map, silhouettes, lookup,
-      vec3(p.xy + reach * silhouetteAround[k], p.z), i, soft, false, depth, unused);
+    visibility += silhouetteSample(map, silhouettes, lookup, vec3(p.xy + reach * around, p.z), i,
+      soft, false, depth, unused);
+    around = silhouetteNextAround(around);
   }
-  return 0.25 * visibility;
+  return width > 0.0 ? 0.25 * visibility : visibility;
 }
 #endif
 
@@ -222,16 +240,18 @@ float silhouetteCubeVisibility(samplerCube distances, samplerCube silhouettes, s
   vtkShadowCubeFace(v, s, t, axis);
   float reach = silhouetteSpread * width * 2.0 * axis / silhouetteMapSize;
   float facing = dot(normalWC, v);
-  for (int k = 0; k < 3; ++k)
+  vec2 d = silhouetteFirstAround;
+  for (int k = 0; k < silhouetteOuterSamples(width); ++k)
   {
     float unused;
-    vec3 around = v + reach * (silhouetteAround[k].x * s + silhouetteAround[k].y * t);
+    vec3 around = v + reach * (d.x * s + d.y * t);
     float along = dot(normalWC, around);
     around *= along * facing > 1.0e-12 * dot(around, around) ? facing / along : 1.0;
     visibility += silhouetteCubeSample(distances, silhouettes, lookup, around,
       dot(around, around) * vtkShadowDistanceBias, i, soft, false, depth, unused);
+    d = silhouetteNextAround(d);
   }
-  return 0.25 * visibility;
+  return width > 0.0 ? 0.25 * visibility : visibility;
 }
 #endif
 
