@@ -166,14 +166,15 @@ float silhouetteVisibility(sampler2DShadow map, sampler2D silhouettes, sampler2D
   }
   float reach = silhouetteSpread * width / silhouetteMapSize;
   vec2 around = silhouetteFirstAround;
-  for (int k = 0; k < silhouetteOuterSamples(width); ++k)
+  int outer = silhouetteOuterSamples(width);
+  for (int k = 0; k < outer; ++k)
   {
     float unused;
     visibility += silhouetteSample(map, silhouettes, lookup, vec3(p.xy + reach * around, p.z), i,
       soft, false, depth, unused);
     around = silhouetteNextAround(around);
   }
-  return width > 0.0 ? 0.25 * visibility : visibility;
+  return visibility / float(1 + outer); // the mean of the samples taken
 }
 #endif
 
@@ -241,7 +242,8 @@ float silhouetteCubeVisibility(samplerCube distances, samplerCube silhouettes, s
   float reach = silhouetteSpread * width * 2.0 * axis / silhouetteMapSize;
   float facing = dot(normalWC, v);
   vec2 d = silhouetteFirstAround;
-  for (int k = 0; k < silhouetteOuterSamples(width); ++k)
+  int outer = silhouetteOuterSamples(width);
+  for (int k = 0; k < outer; ++k)
   {
     float unused;
     vec3 around = v + reach * (d.x * s + d.y * t);
@@ -251,7 +253,7 @@ float silhouetteCubeVisibility(samplerCube distances, samplerCube silhouettes, s
       dot(around, around) * vtkShadowDistanceBias, i, soft, false, depth, unused);
     d = silhouetteNextAround(d);
   }
-  return width > 0.0 ? 0.25 * visibility : visibility;
+  return visibility / float(1 + outer); // the mean of the samples taken
 }
 #endif
 
