@@ -20,10 +20,17 @@ uniform mat4 vtkShadowCameraClipToWorld;
 uniform vec3 vtkShadowCameraPosition;
 
 // This pixel. From texCoord rather than gl_FragCoord so that every pass uses
-// the quad's texture coordinates (VTK's quad helper binds them).
+// the quad's texture coordinates (VTK's quad helper binds them). Tiles are
+// drawn into targets of the camera depth's size
+// (vtkShadowScreenBuffers::DrawTiles()): there it is the fragment's own,
+// with no uniform to load for every fragment.
 ivec2 vtkShadowScreenPixel()
 {
+#ifdef VTK_SHADOW_TILES
+  return ivec2(gl_FragCoord.xy);
+#else
   return ivec2(texCoord * vec2(textureSize(vtkShadowCameraDepth, 0)));
+#endif
 }
 
 float vtkShadowCameraDepthAt(ivec2 pixel)
