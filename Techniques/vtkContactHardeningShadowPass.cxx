@@ -67,6 +67,15 @@ std::vector<float> ScaledTaps(const std::vector<float>& taps, int size, bool rou
   }
   return scaled;
 }
+
+// A buffer pixel's world size (vtkShadowScreenBuffers::GetPixelFootprint():
+// x + y * camera distance, one of them 0): x with a parallel camera, else y
+// (contactPixelSize, CONTACT_PARALLEL_CAMERA).
+float PixelSize(vtkShadowScreenBuffers* screen)
+{
+  const float* footprint = screen->GetPixelFootprint();
+  return footprint[1] > 0.0f ? footprint[1] : footprint[0];
+}
 }
 
 class vtkContactHardeningShadowPass::vtkInternals
@@ -75,6 +84,12 @@ public:
   /// Whether the camera pass writes the codes of the pixels the PCF pass
   /// leaves alone, which then draws only the tiles with work.
   bool CameraCodes = false;
+  // Whether the camera projects in parallel: a buffer pixel's world size is
+  // then one length, else one per unit of camera distance (compiled in).
+  bool ParallelCamera = false;
+  // The screen-space passes' constants, and the settings they were made of.
+  std::string ConstantsKey;
+  std::string Constants;
   // This frame's screen-space passes, kept by the screen buffers.
   vtkOpenGLQuadHelper *Tiles = nullptr, *TileSpread = nullptr, *Prepare = nullptr,
                       *MultiPass = nullptr, *Coarse = nullptr, *PCF = nullptr, *Gaussian = nullptr,
@@ -117,7 +132,7 @@ public:
   /// A pass over the whole buffer, or with `tiles` only over the tiles
   /// with work (vtkContactTileSpreadFS.glsl).
   void Draw(vtkShadowScreenBuffers* screen, vtkOpenGLQuadHelper* quad, vtkTextureObject* input,
-    const std::function<void(vtkShaderProgram*)>& uniforms, bool debugView,
+    const std::function<void(vtkShaderProgram*)>& uniforms,
     vtkShadowScreenBuffers::QuadMask mask = vtkShadowScreenBuffers::QuadMask::None,
     float quadDepth = 0.5f, vtkTextureObject* tiles = nullptr)
   {
@@ -131,9 +146,7 @@ public:
       {
         program->SetUniformi("contactMap", input->GetTextureUnit());
       }
-      program->SetUniformf("contactDepthTolerance", DepthTolerance);
-      program->SetUniform2f("contactPixelFootprint", screen->GetPixelFootprint());
-      program->SetUniformi("contactDebugView", debugView ? 1 : 0);
+      program->SetUniformf("contactPixelSize", PixelSize(screen));
       uniforms(program);
     };
     if (tiles)
@@ -228,28 +241,32 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
   vtkRenderer* renderer = s->GetRenderer();
   auto* context = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   vtkInternals& in = *this->Internals;
-  auto withCommon = [](const std::string& source, const std::string& defines = std::string())
-  { return [=]() { return std::string(vtkContactCommonFS) + "\n" + defines + source; }; };
-  in.Tiles = this->GetScreenQuad("contact.tiles", withCommon(vtkContactTilesFS));
-  in.TileSpread = this->GetScreenQuad("contact.tilespread", withCommon(vtkContactTileSpreadFS));
-  // Only receivers that refine read the penumbra widths: the pixels' D are
-  // settled with them coded (a log2 a pixel) only then.
-  const std::string widths = this->RefineUnresolved ? "1" : "0";
-  auto settling = [&](const char* source)
+  // The passes' settings are compiled in, not uniforms: llvmpipe loads a
+  // uniform for every fragment and use. A change rebuilds the passes.
+  in.ParallelCamera = renderer->GetActiveCamera()->GetParallelProjection() != 0;
+  const std::string key = this->ScreenPassConstantsKey();
+  if (key != in.ConstantsKey)
   {
-    return withCommon(std::string(vtkContactPrepareTexelFS) + "\n" + source,
-      "#define CONTACT_WIDTHS " + widths + "\n");
-  };
+    in.ConstantsKey = key;
+    in.Constants = this->ScreenPassConstants();
+  }
+  auto withCommon = [&in](const std::string& source)
+  { return [&in, source]() { return in.Constants + vtkContactCommonFS + "\n" + source; }; };
+  auto settling = [&](const char* source)
+  { return withCommon(std::string(vtkContactPrepareTexelFS) + "\n" + source); };
+  in.Tiles = this->GetScreenQuad("contact.tiles", withCommon(vtkContactTilesFS), key);
+  in.TileSpread =
+    this->GetScreenQuad("contact.tilespread", withCommon(vtkContactTileSpreadFS), key);
   // Without points a tile wide, PCF is drawn over every pixel, as for the
   // debug view, with the same result.
   in.CameraCodes =
     this->Variant == PCF && !this->DebugView && this->Screen->SupportsTiles(TileSize);
-  in.Prepare = this->GetScreenQuad("contact.prepare", settling(vtkContactPrepareFS), widths);
-  in.MultiPass = this->GetScreenQuad("contact.multipass", withCommon(vtkContactMultiPassFS));
-  in.Coarse = this->GetScreenQuad("contact.coarse", withCommon(vtkContactCoarseFS));
-  in.PCF = this->GetScreenQuad("contact.pcf", settling(vtkContactPCFFS), widths, in.CameraCodes);
-  in.Gaussian = this->GetScreenQuad("contact.gaussian", withCommon(vtkContactGaussianFS));
-  in.Resolve = this->GetScreenQuad("contact.resolve", withCommon(vtkContactResolveFS));
+  in.Prepare = this->GetScreenQuad("contact.prepare", settling(vtkContactPrepareFS), key);
+  in.MultiPass = this->GetScreenQuad("contact.multipass", withCommon(vtkContactMultiPassFS), key);
+  in.Coarse = this->GetScreenQuad("contact.coarse", withCommon(vtkContactCoarseFS), key);
+  in.PCF = this->GetScreenQuad("contact.pcf", settling(vtkContactPCFFS), key, in.CameraCodes);
+  in.Gaussian = this->GetScreenQuad("contact.gaussian", withCommon(vtkContactGaussianFS), key);
+  in.Resolve = this->GetScreenQuad("contact.resolve", withCommon(vtkContactResolveFS), key);
   if (!in.Tiles || !in.TileSpread || !in.Prepare || !in.MultiPass || !in.Coarse || !in.PCF ||
     !in.Gaussian || !in.Resolve)
   {
@@ -329,6 +346,8 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
 bool vtkContactHardeningShadowPass::RenderDistanceMaps(const vtkRenderState* s, size_t first,
   size_t count, const std::vector<vtkTextureObject*>& targets)
 {
+  this->Internals->ParallelCamera =
+    s->GetRenderer()->GetActiveCamera()->GetParallelProjection() != 0;
   vtkInternals& in = *this->Internals;
   const auto& lights = this->Maps->GetLights();
   in.CameraPassFirst = first;
@@ -388,6 +407,7 @@ std::string vtkContactHardeningShadowPass::DistanceMapDeclarations() const
       << "#define CONTACT_MAPS " << maps << "\n"
       << "#define CONTACT_CUBES " << cubes << "\n"
       << "#define CONTACT_LIGHT_SIZE " << (this->UseLightSize ? 1 : 0) << "\n"
+      << "#define CONTACT_PARALLEL_CAMERA " << (in.ParallelCamera ? 1 : 0) << "\n"
       << "#define CONTACT_COUNT_PASSES " << (this->Variant == MultiPass ? 1 : 0) << "\n"
       << "#define CONTACT_PASS_LIMIT " << this->PassLimit << "\n"
       << "#define CONTACT_CODES " << (in.CameraCodes ? 1 : 0) << "\n";
@@ -451,6 +471,57 @@ std::string vtkContactHardeningShadowPass::DistanceMapImplementation() const
 }
 
 //------------------------------------------------------------------------------
+std::string vtkContactHardeningShadowPass::ScreenPassConstantsKey() const
+{
+  std::ostringstream key;
+  key << this->Variant << ' ' << this->DebugView << ' ' << this->MaximumKernelSize << ' '
+      << this->UmbraEarlyOut << ' ' << this->EarlyOutKernelSize << ' ' << this->Dilation << ' '
+      << this->DilationSize << ' ' << this->PoissonTaps << ' ' << this->RefineUnresolved << ' '
+      << this->Internals->ParallelCamera;
+  return key.str();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkContactHardeningShadowPass::ScreenPassConstants() const
+{
+  const vtkInternals& in = *this->Internals;
+  // How many tiles a pixel's neighbourhoods reach (vtkContactTileSpreadFS.glsl).
+  const int earlyOutReach = this->EarlyOutKernelSize / 2;
+  const int dilationReach = (this->DilationSize + 1) / 2;
+  // The dilation's first taps, in whole pixels (vtkContactPrepareTexel()).
+  const std::vector<float> dilationTaps =
+    ScaledTaps(in.Taps(this->PoissonTaps), this->DilationSize);
+  const int dilationCount = std::min(this->PoissonTaps, 8);
+  auto boolean = [](bool value) { return value ? "true" : "false"; };
+  std::ostringstream c;
+  // Exact: 9 significant digits round-trip a float.
+  c << std::scientific << std::setprecision(9)
+    << "const float contactDepthTolerance = " << DepthTolerance << ";\n"
+    << "const bool contactDebugView = " << boolean(this->DebugView) << ";\n"
+    << "const int contactMaximumKernel = " << this->MaximumKernelSize << ";\n"
+    << "const int contactTileSize = " << TileSize << ";\n"
+    << "const bool contactEarlyOut = " << boolean(this->UmbraEarlyOut) << ";\n"
+    << "const int contactEarlyOutTiles = " << (earlyOutReach + TileSize - 1) / TileSize << ";\n"
+    << "const bool contactDilation = " << boolean(this->Dilation) << ";\n"
+    << "const int contactDilationTiles = " << (dilationReach + TileSize - 1) / TileSize
+    << ";\n"
+    // D counts passes (a fraction blends the last in) or kernel pixels.
+    << "const float contactSmallestD = " << (this->Variant == MultiPass ? 0.01f : 1.5f) << ";\n"
+    << "const bool contactCountsPasses = " << boolean(this->Variant == MultiPass) << ";\n"
+    << "#define CONTACT_WIDTHS " << (this->RefineUnresolved ? 1 : 0) << "\n"
+    << "#define CONTACT_PARALLEL_CAMERA " << (in.ParallelCamera ? 1 : 0) << "\n"
+    << "#define CONTACT_DILATION_TAPS " << dilationCount << "\n"
+    << "const vec3 contactDilationTaps[" << dilationCount << "] = vec3[](";
+  for (int i = 0; i < dilationCount; ++i)
+  {
+    c << (i > 0 ? ", " : "") << "vec3(" << dilationTaps[3 * i] << ", " << dilationTaps[3 * i + 1]
+      << ", " << dilationTaps[3 * i + 2] << ")";
+  }
+  c << ");\n";
+  return c.str();
+}
+
+//------------------------------------------------------------------------------
 void vtkContactHardeningShadowPass::SetDistanceMapUniforms(vtkShaderProgram* program)
 {
   const vtkInternals& in = *this->Internals;
@@ -501,7 +572,7 @@ void vtkContactHardeningShadowPass::SetDistanceMapUniforms(vtkShaderProgram* pro
     program->SetUniformf("contactResolutionDivisor", static_cast<float>(this->ResolutionDivisor));
     return;
   }
-  program->SetUniform2f("contactPixelFootprint", this->Screen->GetPixelFootprint());
+  program->SetUniformf("contactPixelSize", PixelSize(this->Screen.get()));
 }
 
 //------------------------------------------------------------------------------
@@ -515,7 +586,6 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
   const std::array<vtkTextureObject*, 2> tiles = { screen->GetTexture(
                                                      "contact.tiles0", 4, tilesW, tilesH),
     screen->GetTexture("contact.tiles1", 4, tilesW, tilesH) };
-  const std::vector<float>& taps = in.FrameTaps;
 
   vtkOpenGLState* state = context->GetState();
   vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
@@ -528,28 +598,13 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
     Targets bound(screen, { tiles[0] }, nullptr, tilesW, tilesH);
     vtkShadowScreenBuffers::Sampler bilinear(
       screen, distance, vtkShadowScreenBuffers::Sampler::Reading::Bilinear);
-    in.Draw(
-      screen, in.Tiles, nullptr,
+    in.Draw(screen, in.Tiles, nullptr,
       [&](vtkShaderProgram* program)
-      {
-        program->SetUniformi("contactMap", distance->GetTextureUnit());
-        program->SetUniformi("contactTileSize", TileSize);
-      },
-      this->DebugView);
+      { program->SetUniformi("contactMap", distance->GetTextureUnit()); });
   }
   {
     Targets bound(screen, { tiles[1] }, nullptr, tilesW, tilesH);
-    in.Draw(
-      screen, in.TileSpread, tiles[0],
-      [&](vtkShaderProgram* program)
-      {
-        const int earlyOutReach = this->EarlyOutKernelSize / 2;
-        const int dilationReach = (this->DilationSize + 1) / 2;
-        program->SetUniformi("contactEarlyOutTiles", (earlyOutReach + TileSize - 1) / TileSize);
-        program->SetUniformi("contactDilationTiles", (dilationReach + TileSize - 1) / TileSize);
-        program->SetUniformi("contactEarlyOut", this->UmbraEarlyOut ? 1 : 0);
-      },
-      this->DebugView);
+    in.Draw(screen, in.TileSpread, tiles[0], [](vtkShaderProgram*) {});
   }
 
   // Umbra early-out and pass 3 (vtkContactPrepareTexelFS.glsl): what the
@@ -558,24 +613,14 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
   auto settling = [&](vtkShaderProgram* program)
   {
     program->SetUniformi("contactTiles", tiles[1]->GetTextureUnit());
-    program->SetUniformi("contactTileSize", TileSize);
-    program->SetUniformi("contactEarlyOut", this->UmbraEarlyOut ? 1 : 0);
-    program->SetUniformi("contactDilation", this->Dilation ? 1 : 0);
-    // D counts passes (a fraction blends the last in) or kernel pixels.
-    program->SetUniformf("contactSmallestD", this->Variant == MultiPass ? 0.01f : 1.5f);
-    program->SetUniformi("contactMaximumKernel", this->MaximumKernelSize);
     if (this->RefineUnresolved) // CONTACT_WIDTHS
     {
-      program->SetUniformi("contactCountsPasses", this->Variant == MultiPass ? 1 : 0);
       // Summed variances of 0 .. 64 passes (those past the limit add none).
       std::vector<float> variances(in.PassStarts);
       variances.push_back(in.PassStarts.back() + 1.0f / in.PassInverseVariances.back());
       variances.resize(65, variances.back());
       program->SetUniform1fv("contactPassVariances", 65, variances.data());
     }
-    const std::vector<float> dilationTaps = ScaledTaps(taps, this->DilationSize);
-    program->SetUniform3fv("contactTaps", this->PoissonTaps, dilationTaps.data());
-    program->SetUniformi("contactTapCount", this->PoissonTaps);
   };
   vtkTextureObject* packed = screen->GetPacked(slot);
   if (this->Variant == PCF)
@@ -608,8 +653,7 @@ void vtkContactHardeningShadowPass::FilterPCF(vtkTextureObject* distance, vtkTex
   vtkTextureObject* coarse = screen->GetTexture("contact.coarse", 4, coarseW, coarseH);
   {
     Targets bound(screen, { coarse }, nullptr, coarseW, coarseH);
-    in.Draw(
-      screen, in.Coarse, distance, [](vtkShaderProgram*) {}, this->DebugView);
+    in.Draw(screen, in.Coarse, distance, [](vtkShaderProgram*) {});
   }
   coarse->Activate();
   {
@@ -621,8 +665,7 @@ void vtkContactHardeningShadowPass::FilterPCF(vtkTextureObject* distance, vtkTex
         settling(program);
         program->SetUniformi("contactCoarse", coarse->GetTextureUnit());
       },
-      this->DebugView, vtkShadowScreenBuffers::QuadMask::None, 0.5f,
-      in.CameraCodes ? tiles : nullptr);
+      vtkShadowScreenBuffers::QuadMask::None, 0.5f, in.CameraCodes ? tiles : nullptr);
   }
   coarse->Deactivate();
 }
@@ -661,13 +704,12 @@ void vtkContactHardeningShadowPass::FilterBlurs(vtkTextureObject* distance,
                     const std::function<void(vtkShaderProgram*)>& uniforms)
   {
     Targets bound(screen, { packed });
-    in.Draw(screen, quad, input, uniforms, this->DebugView);
+    in.Draw(screen, quad, input, uniforms);
   };
 
   {
     Targets bound(screen, chainTargets(pair[0]), mask);
-    in.Draw(screen, in.Prepare, distance, settling, this->DebugView,
-      vtkShadowScreenBuffers::QuadMask::Write);
+    in.Draw(screen, in.Prepare, distance, settling, vtkShadowScreenBuffers::QuadMask::Write);
   }
 
   // Pass 4, then pass 5's visibility.
@@ -704,8 +746,7 @@ void vtkContactHardeningShadowPass::FilterBlurs(vtkTextureObject* distance,
             program->SetUniformi("contactTapCount", this->PoissonTaps);
             program->SetUniformf("contactKernelSize", static_cast<float>(size));
           },
-          this->DebugView, vtkShadowScreenBuffers::QuadMask::Test,
-          1.0f - static_cast<float>(pass) / 256.0f);
+          vtkShadowScreenBuffers::QuadMask::Test, 1.0f - static_cast<float>(pass) / 256.0f);
       }
       glEndQuery(GL_SAMPLES_PASSED);
       if (pass > 0)
@@ -723,20 +764,16 @@ void vtkContactHardeningShadowPass::FilterBlurs(vtkTextureObject* distance,
     vtkTextureObject* rows = screen->GetTexture("contact.filter1", 4);
     {
       Targets bound(screen, { rows });
-      in.Draw(
-        screen, in.Gaussian, filtered,
+      in.Draw(screen, in.Gaussian, filtered,
         [&](vtkShaderProgram* program)
         {
-          program->SetUniformi("contactMaximumKernel", this->MaximumKernelSize);
           program->SetUniform2i("contactDirection", std::array<int, 2>{ 1, 0 }.data());
           program->SetUniformi("contactLastPass", 0);
-        },
-        this->DebugView);
+        });
     }
     toPacked(in.Gaussian, rows,
       [&](vtkShaderProgram* program)
       {
-        program->SetUniformi("contactMaximumKernel", this->MaximumKernelSize);
         program->SetUniform2i("contactDirection", std::array<int, 2>{ 0, 1 }.data());
         program->SetUniformi("contactLastPass", 1);
       });

@@ -259,6 +259,10 @@ private:
 
   /// The multi-pass variant's kernel size in pass `pass` (from 0).
   int KernelSize(int pass) const;
+  /// The screen-space passes' settings as GLSL constants
+  /// (vtkContactCommonFS.glsl), and what they depend on.
+  std::string ScreenPassConstants() const;
+  std::string ScreenPassConstantsKey() const;
   /// Pass 2 for lights first .. first + count - 1 into `targets` (see
   /// RenderScreenSpace()), drawn with the camera depth.
   bool RenderDistanceMaps(const vtkRenderState* s, size_t first, size_t count,

@@ -9,11 +9,17 @@
 // pixel's hard side, its penumbra's width; vtkShadowScreenVisibility()),
 // b = the surface's camera distance (0 on background), a = D (<= 0: not
 // blurred).
+// The passes' settings are constants compiled in before this file
+// (vtkContactHardeningShadowPass::ScreenPassConstants()), as llvmpipe loads
+// a uniform for every fragment and use: contactDepthTolerance (relative, of
+// a camera distance), contactDebugView, contactMaximumKernel (the widest
+// kernel, pixels), contactTileSize, contactEarlyOut and contactEarlyOutTiles,
+// contactDilation and contactDilationTiles (how many tiles their
+// neighbourhoods reach), contactSmallestD, contactCountsPasses,
+// CONTACT_WIDTHS, CONTACT_PARALLEL_CAMERA, and the dilation's CONTACT_DILATION_TAPS taps
+// contactDilationTaps (offsets in whole pixels, and weights).
 // Uses: vtkShadowScreenCodeFS.glsl (vtkShadowPackTexel).
 uniform sampler2D contactMap;
-uniform float contactDepthTolerance;
-uniform bool contactDebugView;
-uniform int contactMaximumKernel; // the widest kernel, pixels
 
 vec4 vtkContactFetch(ivec2 pixel)
 {
@@ -35,7 +41,9 @@ bool vtkContactSameSurface(vec4 center, vec4 tap)
 // screen moves 1 / sin(e) along it, and the distance by cot(e): the kernel
 // is foreshortened along the slope and whole along the level lines, as the
 // penumbra is.
-uniform vec2 contactPixelFootprint; // world size of a buffer pixel: x + y * camera distance
+// A buffer pixel's world size: itself with a parallel camera
+// (CONTACT_PARALLEL_CAMERA), else per unit of camera distance.
+uniform float contactPixelSize;
 
 // `perPixel`: 1 / a pixel's world size at the centre (vtkContactPixelsPerLength()).
 float vtkContactSurfaceDistance2(vec4 center, vec4 tap, vec2 offset, float perPixel)
@@ -46,7 +54,11 @@ float vtkContactSurfaceDistance2(vec4 center, vec4 tap, vec2 offset, float perPi
 
 float vtkContactPixelsPerLength(vec4 center)
 {
-  return 1.0 / (contactPixelFootprint.x + contactPixelFootprint.y * center.b);
+#if CONTACT_PARALLEL_CAMERA
+  return 1.0 / contactPixelSize;
+#else
+  return 1.0 / (contactPixelSize * center.b);
+#endif
 }
 
 // The change of camera distance a pixel across, in pixels' world size, on

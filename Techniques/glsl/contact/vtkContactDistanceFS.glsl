@@ -17,7 +17,8 @@
 // The pass's choices are compiled in, not uniforms: CONTACT_LIGHT_SIZE (D
 // from the light's size), CONTACT_COUNT_PASSES (D counts multi-pass blurs,
 // at most CONTACT_PASS_LIMIT), CONTACT_CODES (the pass also writes the
-// receivers' codes of settled pixels), and per light whether its map is a
+// receivers' codes of settled pixels), CONTACT_PARALLEL_CAMERA (a pixel's
+// world size is one length), and per light whether its map is a
 // perspective one. A software rasterizer runs both arms of a branch, even
 // on a uniform, and this code runs on every fragment the camera draws.
 // Uses: vtkShadowNormalOffsetFS.glsl, vtkShadowCubeLookupFS.glsl,
@@ -44,7 +45,9 @@ uniform float contactDistanceBias;
 uniform float contactNormalBias;
 
 #if CONTACT_LIGHT_SIZE
-uniform vec2 contactPixelFootprint; // world size of a buffer pixel: x + y * camera distance
+// A buffer pixel's world size: itself with a parallel camera
+// (CONTACT_PARALLEL_CAMERA), else per unit of camera distance.
+uniform float contactPixelSize;
 #else
 uniform float contactDistancePower;
 uniform float contactDistanceMultiplier;
@@ -97,8 +100,11 @@ void vtkContactCameraSetup(vec3 positionVC)
   // The penumbra's width in pixels where it lies across the view; the
   // filters lay their kernels on the receiver (vtkContactSurfaceDistance2),
   // which foreshortens them along its slope.
-  contactPixelsPerLength =
-    1.0 / (contactPixelFootprint.x + contactPixelFootprint.y * contactCameraDistance);
+#if CONTACT_PARALLEL_CAMERA
+  contactPixelsPerLength = 1.0 / contactPixelSize;
+#else
+  contactPixelsPerLength = 1.0 / (contactPixelSize * contactCameraDistance);
+#endif
 #endif
 }
 

@@ -8,13 +8,7 @@
 // (vtkContactTileSpreadFS.glsl) with one fetch: a software rasterizer shades
 // both arms of a branch, but a loop ends once no pixel of a group runs it.
 // Uses: vtkShadowScreenCodeFS.glsl, vtkContactCommonFS.glsl.
-uniform bool contactEarlyOut;
-uniform bool contactDilation;
-uniform vec3 contactTaps[64]; // offsets in pixels over the dilation kernel, and weights
-uniform int contactTapCount;
 uniform sampler2D contactTiles;
-uniform int contactTileSize;
-uniform float contactSmallestD;
 
 #if CONTACT_WIDTHS
 // Compiled in for receivers that refine (vtkContactRefine(), vtkContactUpsampleFS.glsl): the
@@ -22,7 +16,6 @@ uniform float contactSmallestD;
 // pixel. A kernel's (clamped to the maximum), or, counting multi-pass
 // blurs, 4 sigma of their summed variances (contactPassVariances[k]: that
 // of k passes).
-uniform bool contactCountsPasses;
 uniform float contactPassVariances[65];
 
 float vtkContactWidth(float d)
@@ -56,14 +49,15 @@ vec4 vtkContactPrepareTexel(ivec2 pixel)
     // counts). None without a shadow in reach.
     float sum = 0.0;
     float weights = 0.0;
-    int count = tiles.y > 0.0 ? min(contactTapCount, 8) : 0;
+    int count = tiles.y > 0.0 ? CONTACT_DILATION_TAPS : 0;
     for (int i = 1; i < count; ++i)
     {
-      vec4 t = vtkContactFetch(pixel + ivec2(contactTaps[i].xy));
+      vec3 tap = contactDilationTaps[i];
+      vec4 t = vtkContactFetch(pixel + ivec2(tap.xy));
       if (t.r < 1.0 && vtkContactSameSurface(c, t))
       {
-        sum += contactTaps[i].z * t.a;
-        weights += contactTaps[i].z;
+        sum += tap.z * t.a;
+        weights += tap.z;
       }
     }
     d = weights > 0.0 ? sum / weights : 0.0;

@@ -10,9 +10,6 @@
 //      what the camera pass wrote already: all lit (no D, nothing to
 //      dilate) or, with the early-out, all umbra (D dropped).
 // Uses: vtkShadowScreenCommonFS.glsl, vtkContactCommonFS.glsl.
-uniform int contactEarlyOutTiles;
-uniform int contactDilationTiles;
-uniform bool contactEarlyOut;
 
 void main()
 {

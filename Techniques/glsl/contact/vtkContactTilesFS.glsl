@@ -8,7 +8,6 @@
 // corner, the mean of four, is 1 only if all four are and 0 only if none
 // is: a quarter of the fetches.
 // Uses: vtkShadowScreenCommonFS.glsl, vtkContactCommonFS.glsl.
-uniform int contactTileSize;
 
 void main()
 {
