@@ -113,9 +113,9 @@ public:
    * Draw a Coverage::Tiles pass as DrawQuad() does, but only over the tiles
    * `tiles` selects: a texture with a texel per `tileSize` x `tileSize`
    * pixels of the target (the buffers' size), whose last component is
-   * positive where its tile is drawn. A software rasterizer pays for every pixel a full-screen pass
-   * covers, even one whose shader only copies; pixels outside the drawn
-   * tiles keep what the targets held.
+   * positive where its tile is drawn. A software rasterizer pays for every
+   * pixel a full-screen pass covers, even one whose shader only copies;
+   * pixels outside the drawn tiles keep what the targets held.
    */
   void DrawTiles(vtkOpenGLQuadHelper* quad, vtkTextureObject* tiles, int tileSize,
     const std::function<void(vtkShaderProgram*)>& setUniforms, QuadMask mask = QuadMask::None,

@@ -16,7 +16,8 @@
 // kernel, pixels), contactTileSize, contactEarlyOut and contactEarlyOutTiles,
 // contactDilation and contactDilationTiles (how many tiles their
 // neighbourhoods reach), contactSmallestD, contactCountsPasses,
-// CONTACT_WIDTHS, CONTACT_PARALLEL_CAMERA, and the dilation's CONTACT_DILATION_TAPS taps
+// CONTACT_WIDTHS, CONTACT_PARALLEL_CAMERA (a buffer pixel's world size is
+// one length), and the dilation's CONTACT_DILATION_TAPS taps
 // contactDilationTaps (offsets in whole pixels, and weights).
 // Uses: vtkShadowScreenCodeFS.glsl (vtkShadowPackTexel).
 uniform sampler2D contactMap;
