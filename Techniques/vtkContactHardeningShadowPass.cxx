@@ -69,12 +69,11 @@ std::vector<float> ScaledTaps(const std::vector<float>& taps, int size, bool rou
 }
 
 // A buffer pixel's world size (vtkShadowScreenBuffers::GetPixelFootprint():
-// x + y * camera distance, one of them 0): x with a parallel camera, else y
+// x + y * camera distance): x with a parallel camera, else y
 // (contactPixelSize, CONTACT_PARALLEL_CAMERA).
-float PixelSize(vtkShadowScreenBuffers* screen)
+float PixelSize(vtkShadowScreenBuffers* screen, bool parallel)
 {
-  const float* footprint = screen->GetPixelFootprint();
-  return footprint[1] > 0.0f ? footprint[1] : footprint[0];
+  return screen->GetPixelFootprint()[parallel ? 0 : 1];
 }
 }
 
@@ -84,9 +83,8 @@ public:
   /// Whether the camera pass writes the codes of the pixels the PCF pass
   /// leaves alone, which then draws only the tiles with work.
   bool CameraCodes = false;
-  // Whether the camera projects in parallel: a buffer pixel's world size is
-  // then one length, else one per unit of camera distance (compiled in).
-  bool ParallelCamera = false;
+  // This frame's buffer pixel's world size (contactPixelSize).
+  float PixelSize = 0.0f;
   // The screen-space passes' constants, and the settings they were made of.
   std::string ConstantsKey;
   std::string Constants;
@@ -146,7 +144,7 @@ public:
       {
         program->SetUniformi("contactMap", input->GetTextureUnit());
       }
-      program->SetUniformf("contactPixelSize", PixelSize(screen));
+      program->SetUniformf("contactPixelSize", this->PixelSize);
       uniforms(program);
     };
     if (tiles)
@@ -243,7 +241,6 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
   vtkInternals& in = *this->Internals;
   // The passes' settings are compiled in, not uniforms: llvmpipe loads a
   // uniform for every fragment and use. A change rebuilds the passes.
-  in.ParallelCamera = renderer->GetActiveCamera()->GetParallelProjection() != 0;
   const std::string key = this->ScreenPassConstantsKey();
   if (key != in.ConstantsKey)
   {
@@ -346,8 +343,6 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
 bool vtkContactHardeningShadowPass::RenderDistanceMaps(const vtkRenderState* s, size_t first,
   size_t count, const std::vector<vtkTextureObject*>& targets)
 {
-  this->Internals->ParallelCamera =
-    s->GetRenderer()->GetActiveCamera()->GetParallelProjection() != 0;
   vtkInternals& in = *this->Internals;
   const auto& lights = this->Maps->GetLights();
   in.CameraPassFirst = first;
@@ -407,7 +402,7 @@ std::string vtkContactHardeningShadowPass::DistanceMapDeclarations() const
       << "#define CONTACT_MAPS " << maps << "\n"
       << "#define CONTACT_CUBES " << cubes << "\n"
       << "#define CONTACT_LIGHT_SIZE " << (this->UseLightSize ? 1 : 0) << "\n"
-      << "#define CONTACT_PARALLEL_CAMERA " << (in.ParallelCamera ? 1 : 0) << "\n"
+      << "#define CONTACT_PARALLEL_CAMERA " << (this->CameraIsParallel() ? 1 : 0) << "\n"
       << "#define CONTACT_COUNT_PASSES " << (this->Variant == MultiPass ? 1 : 0) << "\n"
       << "#define CONTACT_PASS_LIMIT " << this->PassLimit << "\n"
       << "#define CONTACT_CODES " << (in.CameraCodes ? 1 : 0) << "\n";
@@ -471,13 +466,20 @@ std::string vtkContactHardeningShadowPass::DistanceMapImplementation() const
 }
 
 //------------------------------------------------------------------------------
+bool vtkContactHardeningShadowPass::CameraIsParallel() const
+{
+  vtkRenderer* renderer = this->Maps->GetRenderer();
+  return renderer && renderer->GetActiveCamera()->GetParallelProjection() != 0;
+}
+
+//------------------------------------------------------------------------------
 std::string vtkContactHardeningShadowPass::ScreenPassConstantsKey() const
 {
   std::ostringstream key;
   key << this->Variant << ' ' << this->DebugView << ' ' << this->MaximumKernelSize << ' '
       << this->UmbraEarlyOut << ' ' << this->EarlyOutKernelSize << ' ' << this->Dilation << ' '
       << this->DilationSize << ' ' << this->PoissonTaps << ' ' << this->RefineUnresolved << ' '
-      << this->Internals->ParallelCamera;
+      << this->CameraIsParallel();
   return key.str();
 }
 
@@ -509,7 +511,7 @@ std::string vtkContactHardeningShadowPass::ScreenPassConstants() const
     << "const float contactSmallestD = " << (this->Variant == MultiPass ? 0.01f : 1.5f) << ";\n"
     << "const bool contactCountsPasses = " << boolean(this->Variant == MultiPass) << ";\n"
     << "#define CONTACT_WIDTHS " << (this->RefineUnresolved ? 1 : 0) << "\n"
-    << "#define CONTACT_PARALLEL_CAMERA " << (in.ParallelCamera ? 1 : 0) << "\n"
+    << "#define CONTACT_PARALLEL_CAMERA " << (this->CameraIsParallel() ? 1 : 0) << "\n"
     << "#define CONTACT_DILATION_TAPS " << dilationCount << "\n"
     << "const vec3 contactDilationTaps[" << dilationCount << "] = vec3[](";
   for (int i = 0; i < dilationCount; ++i)
@@ -572,7 +574,7 @@ void vtkContactHardeningShadowPass::SetDistanceMapUniforms(vtkShaderProgram* pro
     program->SetUniformf("contactResolutionDivisor", static_cast<float>(this->ResolutionDivisor));
     return;
   }
-  program->SetUniformf("contactPixelSize", PixelSize(this->Screen.get()));
+  program->SetUniformf("contactPixelSize", PixelSize(this->Screen.get(), this->CameraIsParallel()));
 }
 
 //------------------------------------------------------------------------------
@@ -583,6 +585,7 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
   vtkShadowScreenBuffers* screen = this->Screen.get();
   const int tilesW = (screen->GetWidth() + TileSize - 1) / TileSize;
   const int tilesH = (screen->GetHeight() + TileSize - 1) / TileSize;
+  in.PixelSize = PixelSize(screen, this->CameraIsParallel());
   const std::array<vtkTextureObject*, 2> tiles = { screen->GetTexture(
                                                      "contact.tiles0", 4, tilesW, tilesH),
     screen->GetTexture("contact.tiles1", 4, tilesW, tilesH) };

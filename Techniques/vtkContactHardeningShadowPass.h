@@ -263,6 +263,10 @@ private:
   /// (vtkContactCommonFS.glsl), and what they depend on.
   std::string ScreenPassConstants() const;
   std::string ScreenPassConstantsKey() const;
+  /// Whether the renderer's active camera projects in parallel: a buffer
+  /// pixel's world size is then one length, else one per unit of camera
+  /// distance (compiled into the camera and screen passes).
+  bool CameraIsParallel() const;
   /// Pass 2 for lights first .. first + count - 1 into `targets` (see
   /// RenderScreenSpace()), drawn with the camera depth.
   bool RenderDistanceMaps(const vtkRenderState* s, size_t first, size_t count,
