@@ -17,7 +17,10 @@ the yardstick.
 
     python3 scripts/flicker.py SOFTSHADOWS [--techniques silhouette,...]
         [--scenes columns,...,gyroid] [--frames N] [--step RADIANS]
-        [--size WxH] [--samples N] [--json]
+        [--size WxH] [--samples N] [--shadows JSON] [--json]
+
+--shadows merges technique parameters into every scene's "shadows" object,
+e.g. '{"silhouette": {"penumbra_samples": 8, "sample_spread": 0.6}}'.
 """
 import argparse
 import glob
@@ -101,6 +104,8 @@ def main():
     parser.add_argument("--size", default="160x120")
     parser.add_argument("--samples", type=int, default=256)
     parser.add_argument("--gyroid-resolution", type=int, default=100)
+    parser.add_argument("--shadows", type=json.loads, default={},
+                        help="technique parameters merged into each scene's \"shadows\"")
     parser.add_argument("--json", action="store_true")
     args = parser.parse_args()
     techniques = args.techniques.split(",")
@@ -110,6 +115,9 @@ def main():
         else:
             with open("Examples/Scenes/quality/%s.json" % name) as f:
                 scene = json.load(f)
+        shadows = scene.setdefault("shadows", {})
+        for technique, parameters in args.shadows.items():
+            shadows[technique] = dict(shadows.get(technique, {}), **parameters)
         drawn, masks = frames(args.program, scene, techniques, args.frames, args.step, args.size,
                               args.samples)
         for technique, figure in measure(drawn, masks).items():

@@ -6,7 +6,7 @@
 # quality scene and a dense isosurface, a few minutes.
 #
 #   bash scripts/flicker.sh [--techniques ...] [--scenes ...] [--frames N] [--step RADIANS]
-#                           [--size WxH] [--samples N] [--gyroid-resolution N] [--json]
+#                           [--size WxH] [--samples N] [--gyroid-resolution N] [--shadows JSON] [--json]
 set -euo pipefail
 
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
