@@ -5,6 +5,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkLight.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -31,7 +32,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iomanip>
 #include <memory>
+#include <sstream>
 #include <vector>
 
 namespace
@@ -151,15 +154,18 @@ namespace
 //   z_E in front, shadow map lit:   the profile of distance d
 //   z_E in front, shadow map dark:  the profile's inner half (d >= 0), else
 //                                   shadow (another occluder's)
-// Each outer sample of the soft variant lies `spread` half-widths off the
-// point, which widens the mean of the four samples; their profiles are
-// narrowed by sqrt(1 - 1.5 spread^2) so that the mean keeps the disc's second
-// moment.
-std::vector<float> BuildLookup(
-  int texels, int rows, double halfWidth, double widest, double edgeWidth, double spread)
+// The soft variant's `samples - 1` samples around the point lie `spread`
+// half-widths off it, which widens the mean of the samples: their profiles
+// are narrowed so that the mean keeps the light disc's second moment (per
+// axis, a ring of radius s adds s^2 / 2 for (n - 1) / n of the samples, a
+// disc profile of radius r adds r^2 / 4: 1 - 1.5 spread^2 for the paper's
+// four).
+std::vector<float> BuildLookup(int texels, int rows, double halfWidth, double widest,
+  double edgeWidth, double spread, int samples)
 {
   std::vector<float> values(static_cast<size_t>(4 * texels) * rows);
-  const double narrow = std::sqrt(std::max(1.0 - 1.5 * spread * spread, 0.0));
+  const double around = (samples - 1.0) / samples;
+  const double narrow = std::sqrt(std::max(1.0 - 2.0 * around * spread * spread, 0.0));
   for (int row = 0; row < rows; ++row)
   {
     const double width = rows > 1 ? widest * row / (rows - 1) : 0.0;
@@ -282,12 +288,14 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
     spec.Linear = true;
     vtkTextureObject* distances = this->Maps->GetTexture(light, 0, spec);
     const double spread = soft ? this->SampleSpread : 0.0;
+    const int samples = soft ? this->PenumbraSamples : 1;
     const std::vector<double> key = { static_cast<double>(this->LookupTexels),
-      static_cast<double>(rows), band.HalfWidth, band.MaximumPenumbra, this->EdgeWidth, spread };
+      static_cast<double>(rows), band.HalfWidth, band.MaximumPenumbra, this->EdgeWidth, spread,
+      static_cast<double>(samples) };
     if (!band.Lookup || band.LookupKey != key)
     {
-      std::vector<float> lookup = BuildLookup(
-        this->LookupTexels, rows, band.HalfWidth, band.MaximumPenumbra, this->EdgeWidth, spread);
+      std::vector<float> lookup = BuildLookup(this->LookupTexels, rows, band.HalfWidth,
+        band.MaximumPenumbra, this->EdgeWidth, spread, samples);
       band.Lookup = vtkShadowScreenBuffers::NewFloatTexture(
         context, 4 * this->LookupTexels, rows, 1, lookup.data(), true);
       band.LookupKey = key;
@@ -373,7 +381,17 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
 vtkSoftShadowPass::ReceiverCode vtkSilhouetteShadowPass::GetReceiverCode()
 {
   ReceiverCode code;
-  code.Declarations = std::string(vtkSilhouetteCommon) + vtkSilhouetteLookupFS;
+  // The samples' count, reach and turn are compiled in: the count bounds
+  // their loop, and llvmpipe loads a uniform for every fragment that reads
+  // it. 9 significant digits round-trip a float.
+  const double turn = 2.0 * vtkMath::Pi() / std::max(this->PenumbraSamples - 1, 1);
+  std::ostringstream constants;
+  constants << std::scientific << std::setprecision(9)
+            << "const int silhouetteSamples = " << this->PenumbraSamples << ";\n"
+            << "const float silhouetteSpread = " << this->SampleSpread << ";\n"
+            << "const vec2 silhouetteTurn = vec2(" << std::cos(turn) << ", " << std::sin(turn)
+            << ");\n";
+  code.Declarations = constants.str() + vtkSilhouetteCommon + vtkSilhouetteLookupFS;
   // Each light's signed distances and its lookup texture.
   const auto& lights = this->Maps->GetLights();
   for (size_t slot = 0; slot < lights.size(); ++slot)
@@ -402,7 +420,6 @@ vtkSoftShadowPass::ReceiverCode vtkSilhouetteShadowPass::GetReceiverCode()
       program->SetUniform4f(("silhouetteLookupScale" + i).c_str(), bands[slot].LookupScale);
     }
     program->SetUniformf("silhouetteMapSize", static_cast<float>(this->MapSize));
-    program->SetUniformf("silhouetteSpread", static_cast<float>(this->SampleSpread));
     const double texels = this->LookupTexels;
     const float segment[2] = { static_cast<float>((texels - 1.0) / (4.0 * texels)),
       static_cast<float>(0.125 / texels) };
@@ -463,6 +480,7 @@ void vtkSilhouetteShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ExpectedWidth: " << this->ExpectedWidth << "\n";
   os << indent << "EdgeWidth: " << this->EdgeWidth << "\n";
   os << indent << "MaximumPenumbra: " << this->MaximumPenumbra << "\n";
+  os << indent << "PenumbraSamples: " << this->PenumbraSamples << "\n";
   os << indent << "SampleSpread: " << this->SampleSpread << "\n";
   os << indent << "LookupTexels: " << this->LookupTexels << "\n";
   os << indent << "LookupRows: " << this->LookupRows << "\n";

@@ -110,10 +110,17 @@ public:
 
   ///@{
   /**
-   * Soft: how far the three outer samples lie from the point, in penumbra
-   * half-widths. Default 0.25 (docs/quality.md: wider spreads pick up
-   * other silhouettes on folded meshes).
+   * Soft: the samples a point in a penumbra takes, itself included, and
+   * how far those around it lie, in penumbra half-widths, evenly around a
+   * circle; the lookup's profiles narrow as they spread. Section 2.2.1
+   * takes 4. Each sample follows its own nearest silhouette, so where
+   * penumbrae wider than the gaps between occluders overlap (grates,
+   * fences, lattices), only many samples spread over the penumbra add them
+   * up: 8 at 0.6 there (docs/quality.md). Defaults 4 and 0.25 (wider
+   * spreads of 4 samples pick up other silhouettes on folded meshes).
    */
+  vtkSetClampMacro(PenumbraSamples, int, 1, 64);
+  vtkGetMacro(PenumbraSamples, int);
   vtkSetClampMacro(SampleSpread, double, 0.0, 0.8);
   vtkGetMacro(SampleSpread, double);
   ///@}
@@ -216,6 +223,7 @@ protected:
   double ExpectedWidth = 0.0;
   double EdgeWidth = 0.1;
   double MaximumPenumbra = 48.0;
+  int PenumbraSamples = 4;
   double SampleSpread = 0.25;
   int LookupTexels = 256;
   int LookupRows = 32;

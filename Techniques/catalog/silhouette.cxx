@@ -13,7 +13,7 @@ Technique Silhouette()
     "vtkSilhouetteShadowPass: silhouette-distance shadow maps (Valient & Bujnak): the signed "
     "distance to the nearest silhouette, drawn from topology aware meshes, anti-aliases the "
     "shadow map's edges and sizes penumbrae from the light's radius",
-    { { "soft", "four samples, penumbrae from the light's radius" },
+    { { "soft", "penumbrae from the light's radius, several samples (penumbra_samples)" },
       { "hard", "one sample: anti-aliased hard shadows" } },
     {
       BindClamped<vtkSilhouetteShadowPass, double>("expected_width", Number,
@@ -26,8 +26,11 @@ Technique Silhouette()
       BindClamped<vtkSilhouetteShadowPass, double>("max_penumbra", Number,
         "soft: widest penumbra half-width kept, in texels (wider ones are clamped)",
         VTK_SHADOW_CLAMPED(vtkSilhouetteShadowPass, MaximumPenumbra)),
+      BindClamped<vtkSilhouetteShadowPass, int>("penumbra_samples", Integer,
+        "soft: samples a point in a penumbra takes, itself included (the paper's 4)",
+        VTK_SHADOW_CLAMPED(vtkSilhouetteShadowPass, PenumbraSamples)),
       BindClamped<vtkSilhouetteShadowPass, double>("sample_spread", Number,
-        "soft: distance of the three outer samples from the point, in penumbra half-widths",
+        "soft: distance of the samples around the point from it, in penumbra half-widths",
         VTK_SHADOW_CLAMPED(vtkSilhouetteShadowPass, SampleSpread)),
       BindClamped<vtkSilhouetteShadowPass, int>("lookup_texels", Integer,
         "lookup texture texels per segment of eq. 4",

@@ -6,6 +6,12 @@
 // silhouette point's depth) and its lookup texture, which holds four
 // segments side by side (eq. 4), each of LookupTexels texels, and
 // one row per penumbra width (section 2.2.1; one row for hard shadows).
+// The receivers' shader declares, before this file, the soft variant's
+// samples a point takes, how far those around it lie, in penumbra
+// half-widths, and the turn from one to the next
+// (vtkSilhouetteShadowPass::GetReceiverCode):
+//   const int silhouetteSamples; const float silhouetteSpread;
+//   const vec2 silhouetteTurn; // cos, sin
 // Uses: vtkSoftShadowReceiverFS.glsl (vtkShadowReceiverInMap) and
 // vtkShadowCubeLookupFS.glsl (vtkShadowCubeFace, vtkShadowCubeDirection), which
 // the receivers' shader declares before it;
@@ -19,17 +25,19 @@ uniform vec2 silhouetteBand[VTK_SHADOW_LIGHTS]; // W: distances span [-W, W]; Wm
 // row per texel of width; w, the first row's centre.
 uniform vec4 silhouetteLookupScale[VTK_SHADOW_LIGHTS];
 uniform float silhouetteMapSize;
-uniform float silhouetteSpread;     // the three outer samples' distance, in penumbra half-widths
 uniform vec2 silhouetteLookupSegment; // a segment's scale and first centre, T texels each: (T - 1) / 4T, 1 / 8T
-// Where section 2.2.1's three outer samples lie, in units of their reach:
-// (0, 1), then each turned by 120 degrees from the one before. Turned, not
-// read from an array, whose size would tell the compiler the loop's most
-// iterations, and have it unrolled into three samples that run for every
-// pixel (silhouetteOuterSamples()).
+// Where the samples around the point lie, in units of their reach: (0, 1),
+// then each turned by silhouetteTurn (a full turn over their count) from
+// the one before: section 2.2.1's three, 120 degrees apart, or more, which
+// sum overlapping penumbrae (docs/quality.md). Turned, not read from an
+// array, whose size would tell the compiler the loop's most iterations, and
+// have it unrolled into samples that run for every pixel
+// (silhouetteOuterSamples()).
 const vec2 silhouetteFirstAround = vec2(0.0, 1.0);
 vec2 silhouetteNextAround(vec2 d)
 {
-  return vec2(-0.5 * d.x - 0.8660254 * d.y, 0.8660254 * d.x - 0.5 * d.y);
+  return vec2(silhouetteTurn.x * d.x - silhouetteTurn.y * d.y,
+    silhouetteTurn.y * d.x + silhouetteTurn.x * d.y);
 }
 
 // Eq. 4 and, for soft shadows, the row of the penumbra's width: the
@@ -104,17 +112,17 @@ bool silhouetteNone(vec4 d4, int i)
   return all(lessThanEqual(d4, vec4(-2.0 * silhouetteBand[i].x)));
 }
 
-// Section 2.2.1's three outer samples smooth the point's own penumbra: they
-// take its silhouette's depth (`own` false) rather than gather their own,
-// which spares a third of a soft sample's texture reads and leaves the
-// error against the ray-cast truth as it was (docs/benchmarks.md).
-// They are taken only where the point's own sample lies in a penumbra
-// (width > 0): elsewhere their reach is 0 and they would repeat it. A loop
-// whose count varies runs once, masked, for a group of pixels none of which
-// enters it, where three unrolled samples ran for every pixel.
+// Section 2.2.1's samples around the point: they take its silhouette's
+// depth (`own` false) rather than gather their own, which spares a third of
+// a soft sample's texture reads and leaves the error against the ray-cast
+// truth as it was (docs/benchmarks.md). They are taken only where the
+// point's own sample lies in a penumbra (width > 0): elsewhere their reach
+// is 0 and they would repeat it. A loop whose count varies runs once,
+// masked, for a group of pixels none of which enters it, where unrolled
+// samples ran for every pixel.
 int silhouetteOuterSamples(float width)
 {
-  return width > 0.0 ? 3 : 0;
+  return width > 0.0 ? silhouetteSamples - 1 : 0;
 }
 
 #if VTK_SHADOW_MAPS > 0
@@ -145,15 +153,37 @@ float silhouetteSample(sampler2DShadow map, sampler2D silhouettes, sampler2D loo
   return silhouetteResolve(lookup, edge, p.z, lit == 0.0 ? 1.0 : 0.0, i, soft, width);
 }
 
+// How a spot or directional light's map depth changes across the receiver
+// at map point p, per unit of map coordinates, from p's screen derivatives
+// (within the pixel quad they are those of one face's plane, and a plane
+// stays a plane in the map's projection). The samples around the point are
+// compared at that plane's depth where they lie: at the point's own, a
+// receiver at a slant to the light shadows itself wherever it lies nearer
+// the light, which darkens wide penumbrae. Derivatives cost a few shuffles
+// where the plane from the normal and the map's matrix cost 16 uniform
+// loads a fragment; on an imposter the plane is its sprite's. Called in
+// uniform control flow.
+vec2 silhouetteDepthSlope(vec3 p)
+{
+  vec3 dx = dFdx(p);
+  vec3 dy = dFdy(p);
+  float det = dx.x * dy.y - dx.y * dy.x;
+  // Edge-on to the light, or no area (points, lines): no slope.
+  return abs(det) > 1.0e-20 ? vec2(dy.y * dx.z - dx.y * dy.z, dx.x * dy.z - dy.x * dx.z) / det
+                            : vec2(0.0);
+}
+
 // Light i's visibility at a receiver (view-space point and unit normal).
-// Soft: the point and three around it, silhouetteSpread penumbra
-// half-widths away (section 2.2.1), averaged; the lookup's profiles are
-// narrowed to match (vtkSilhouetteShadowPass::BuildLookup).
+// Soft: the point and silhouetteSamples - 1 around it, silhouetteSpread
+// penumbra half-widths away (section 2.2.1), averaged; the lookup's
+// profiles are narrowed to match (vtkSilhouetteShadowPass::BuildLookup).
 float silhouetteVisibility(sampler2DShadow map, sampler2D silhouettes, sampler2D lookup,
   vec3 positionVC, vec3 normalVC, int i, bool soft)
 {
   vec3 p;
-  if (!vtkShadowReceiverInMap(i, positionVC, normalVC, p))
+  bool inMap = vtkShadowReceiverInMap(i, positionVC, normalVC, p);
+  vec2 slope = silhouetteDepthSlope(p); // before any return: derivatives
+  if (!inMap)
   {
     return 1.0;
   }
@@ -170,8 +200,9 @@ float silhouetteVisibility(sampler2DShadow map, sampler2D silhouettes, sampler2D
   for (int k = 0; k < outer; ++k)
   {
     float unused;
-    visibility += silhouetteSample(map, silhouettes, lookup, vec3(p.xy + reach * around, p.z), i,
-      soft, false, depth, unused);
+    vec2 offset = reach * around;
+    visibility += silhouetteSample(map, silhouettes, lookup,
+      vec3(p.xy + offset, p.z + dot(slope, offset)), i, soft, false, depth, unused);
     around = silhouetteNextAround(around);
   }
   return visibility / float(1 + outer); // the mean of the samples taken
@@ -232,7 +263,7 @@ float silhouetteCubeVisibility(samplerCube distances, samplerCube silhouettes, s
   {
     return visibility;
   }
-  // The three outer samples, on the point's cube face (a texel there is
+  // The samples around the point, on the point's cube face (a texel there is
   // 2 / size of the axis distance), each where its direction meets the
   // receiver's plane: compared at the point's own distance, a receiver
   // seen at a slant would shadow itself there (arcs beyond penumbrae).
