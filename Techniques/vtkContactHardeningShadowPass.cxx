@@ -67,14 +67,6 @@ std::vector<float> ScaledTaps(const std::vector<float>& taps, int size, bool rou
   }
   return scaled;
 }
-
-// A buffer pixel's world size (vtkShadowScreenBuffers::GetPixelFootprint():
-// x + y * camera distance): x with a parallel camera, else y
-// (contactPixelSize, CONTACT_PARALLEL_CAMERA).
-float PixelSize(vtkShadowScreenBuffers* screen, bool parallel)
-{
-  return screen->GetPixelFootprint()[parallel ? 0 : 1];
-}
 }
 
 class vtkContactHardeningShadowPass::vtkInternals
@@ -83,7 +75,8 @@ public:
   /// Whether the camera pass writes the codes of the pixels the PCF pass
   /// leaves alone, which then draws only the tiles with work.
   bool CameraCodes = false;
-  // This frame's buffer pixel's world size (contactPixelSize).
+  // This frame's buffer pixel's world size (contactPixelSize), set as its
+  // screen-space passes begin, for them and the camera pass.
   float PixelSize = 0.0f;
   // The screen-space passes' constants, and the settings they were made of.
   std::string ConstantsKey;
@@ -247,6 +240,10 @@ bool vtkContactHardeningShadowPass::RenderScreenSpace(const vtkRenderState* s)
     in.ConstantsKey = key;
     in.Constants = this->ScreenPassConstants();
   }
+  // A buffer pixel's world size (vtkShadowScreenBuffers::GetPixelFootprint():
+  // x + y * camera distance): x with a parallel camera, else y
+  // (CONTACT_PARALLEL_CAMERA).
+  in.PixelSize = this->Screen->GetPixelFootprint()[this->CameraIsParallel() ? 0 : 1];
   auto withCommon = [&in](const std::string& source)
   { return [&in, source]() { return in.Constants + vtkContactCommonFS + "\n" + source; }; };
   auto settling = [&](const char* source)
@@ -574,7 +571,7 @@ void vtkContactHardeningShadowPass::SetDistanceMapUniforms(vtkShaderProgram* pro
     program->SetUniformf("contactResolutionDivisor", static_cast<float>(this->ResolutionDivisor));
     return;
   }
-  program->SetUniformf("contactPixelSize", PixelSize(this->Screen.get(), this->CameraIsParallel()));
+  program->SetUniformf("contactPixelSize", this->Internals->PixelSize);
 }
 
 //------------------------------------------------------------------------------
@@ -585,7 +582,6 @@ void vtkContactHardeningShadowPass::FilterDistanceMap(
   vtkShadowScreenBuffers* screen = this->Screen.get();
   const int tilesW = (screen->GetWidth() + TileSize - 1) / TileSize;
   const int tilesH = (screen->GetHeight() + TileSize - 1) / TileSize;
-  in.PixelSize = PixelSize(screen, this->CameraIsParallel());
   const std::array<vtkTextureObject*, 2> tiles = { screen->GetTexture(
                                                      "contact.tiles0", 4, tilesW, tilesH),
     screen->GetTexture("contact.tiles1", 4, tilesW, tilesH) };
