@@ -154,22 +154,16 @@ namespace
 //   z_E in front, shadow map lit:   the profile of distance d
 //   z_E in front, shadow map dark:  the profile's inner half (d >= 0), else
 //                                   shadow (another occluder's)
-// The soft variant's `samples - 1` samples around the point lie `spread`
-// half-widths off it, which widens the mean of the samples: their profiles
-// are narrowed so that the mean keeps the light disc's second moment (per
-// axis, a ring of radius s adds s^2 / 2 for (n - 1) / n of the samples, a
-// disc profile of radius r adds r^2 / 4: 1 - 1.5 spread^2 for the paper's
-// four).
-std::vector<float> BuildLookup(int texels, int rows, double halfWidth, double widest,
-  double edgeWidth, double spread, int samples)
+// Receivers whose samples spread over the penumbra read the rows of
+// narrower widths (SampleNarrowing()).
+std::vector<float> BuildLookup(
+  int texels, int rows, double halfWidth, double widest, double edgeWidth)
 {
   std::vector<float> values(static_cast<size_t>(4 * texels) * rows);
-  const double around = (samples - 1.0) / samples;
-  const double narrow = std::sqrt(std::max(1.0 - 2.0 * around * spread * spread, 0.0));
   for (int row = 0; row < rows; ++row)
   {
     const double width = rows > 1 ? widest * row / (rows - 1) : 0.0;
-    const double radius = std::max(width * narrow, 0.5 * edgeWidth);
+    const double radius = std::max(width, 0.5 * edgeWidth);
     float* line = &values[static_cast<size_t>(4 * texels) * row];
     for (int j = 0; j < texels; ++j)
     {
@@ -182,6 +176,17 @@ std::vector<float> BuildLookup(int texels, int rows, double halfWidth, double wi
     }
   }
   return values;
+}
+
+// How much the profiles of `samples` samples, all but one `spread`
+// half-widths off the point, are narrowed so that their mean keeps the
+// light disc's second moment: per axis, a ring of radius s adds s^2 / 2 for
+// (n - 1) / n of the samples, a disc profile of radius r adds r^2 / 4 (1 -
+// 1.5 spread^2 for the paper's four).
+double SampleNarrowing(int samples, double spread)
+{
+  const double around = (samples - 1.0) / samples;
+  return std::sqrt(std::max(1.0 - 2.0 * around * spread * spread, 0.0));
 }
 }
 
@@ -287,15 +292,12 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
     spec.Cube = light.Point;
     spec.Linear = true;
     vtkTextureObject* distances = this->Maps->GetTexture(light, 0, spec);
-    const double spread = soft ? this->SampleSpread : 0.0;
-    const int samples = soft ? this->PenumbraSamples : 1;
     const std::vector<double> key = { static_cast<double>(this->LookupTexels),
-      static_cast<double>(rows), band.HalfWidth, band.MaximumPenumbra, this->EdgeWidth, spread,
-      static_cast<double>(samples) };
+      static_cast<double>(rows), band.HalfWidth, band.MaximumPenumbra, this->EdgeWidth };
     if (!band.Lookup || band.LookupKey != key)
     {
-      std::vector<float> lookup = BuildLookup(this->LookupTexels, rows, band.HalfWidth,
-        band.MaximumPenumbra, this->EdgeWidth, spread, samples);
+      std::vector<float> lookup = BuildLookup(
+        this->LookupTexels, rows, band.HalfWidth, band.MaximumPenumbra, this->EdgeWidth);
       band.Lookup = vtkShadowScreenBuffers::NewFloatTexture(
         context, 4 * this->LookupTexels, rows, 1, lookup.data(), true);
       band.LookupKey = key;
@@ -381,16 +383,24 @@ bool vtkSilhouetteShadowPass::RenderShadowMaps(const vtkRenderState* s)
 vtkSoftShadowPass::ReceiverCode vtkSilhouetteShadowPass::GetReceiverCode()
 {
   ReceiverCode code;
-  // The samples' count, reach and turn are compiled in: the count bounds
-  // their loop, and llvmpipe loads a uniform for every fragment that reads
-  // it. 9 significant digits round-trip a float.
-  const double turn = 2.0 * vtkMath::Pi() / std::max(this->PenumbraSamples - 1, 1);
+  // Both sets of samples, count, reach and turn, and the paper's set's
+  // profile narrowing (which the point's own sample keeps) are compiled in:
+  // the count bounds their loop, and llvmpipe loads a uniform for every
+  // fragment that reads it. 9 significant digits round-trip a float.
   std::ostringstream constants;
-  constants << std::scientific << std::setprecision(9)
-            << "const int silhouetteSamples = " << this->PenumbraSamples << ";\n"
-            << "const float silhouetteSpread = " << this->SampleSpread << ";\n"
-            << "const vec2 silhouetteTurn = vec2(" << std::cos(turn) << ", " << std::sin(turn)
-            << ");\n";
+  constants << std::scientific << std::setprecision(9);
+  const auto declare = [&constants](const char* name, int samples, double spread)
+  {
+    const double turn = 2.0 * vtkMath::Pi() / std::max(samples - 1, 1);
+    constants << "const int " << name << "Samples = " << samples << ";\n"
+              << "const float " << name << "Spread = " << spread << ";\n"
+              << "const vec2 " << name << "Turn = vec2(" << std::cos(turn) << ", " << std::sin(turn)
+              << ");\n";
+  };
+  declare("silhouette", this->PenumbraSamples, this->SampleSpread);
+  declare("silhouetteOverlap", this->OverlapSamples, this->OverlapSpread);
+  constants << "const float silhouetteNarrowing = "
+            << SampleNarrowing(this->PenumbraSamples, this->SampleSpread) << ";\n";
   code.Declarations = constants.str() + vtkSilhouetteCommon + vtkSilhouetteLookupFS;
   // Each light's signed distances and its lookup texture.
   const auto& lights = this->Maps->GetLights();
@@ -482,6 +492,8 @@ void vtkSilhouetteShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumPenumbra: " << this->MaximumPenumbra << "\n";
   os << indent << "PenumbraSamples: " << this->PenumbraSamples << "\n";
   os << indent << "SampleSpread: " << this->SampleSpread << "\n";
+  os << indent << "OverlapSamples: " << this->OverlapSamples << "\n";
+  os << indent << "OverlapSpread: " << this->OverlapSpread << "\n";
   os << indent << "LookupTexels: " << this->LookupTexels << "\n";
   os << indent << "LookupRows: " << this->LookupRows << "\n";
   os << indent << "SilhouetteGeometry: "

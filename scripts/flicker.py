@@ -20,7 +20,7 @@ the yardstick.
         [--size WxH] [--samples N] [--shadows JSON] [--json]
 
 --shadows merges technique parameters into every scene's "shadows" object,
-e.g. '{"silhouette": {"penumbra_samples": 8, "sample_spread": 0.6}}'.
+e.g. '{"silhouette": {"overlap_samples": 8}}'.
 """
 import argparse
 import glob

@@ -32,6 +32,13 @@ Technique Silhouette()
       BindClamped<vtkSilhouetteShadowPass, double>("sample_spread", Number,
         "soft: distance of the samples around the point from it, in penumbra half-widths",
         VTK_SHADOW_CLAMPED(vtkSilhouetteShadowPass, SampleSpread)),
+      BindClamped<vtkSilhouetteShadowPass, int>("overlap_samples", Integer,
+        "soft: samples a point takes where another silhouette's penumbra overlaps its own, "
+        "itself included (1: the paper's samples everywhere)",
+        VTK_SHADOW_CLAMPED(vtkSilhouetteShadowPass, OverlapSamples)),
+      BindClamped<vtkSilhouetteShadowPass, double>("overlap_spread", Number,
+        "soft: distance of those samples from the point, in penumbra half-widths",
+        VTK_SHADOW_CLAMPED(vtkSilhouetteShadowPass, OverlapSpread)),
       BindClamped<vtkSilhouetteShadowPass, int>("lookup_texels", Integer,
         "lookup texture texels per segment of eq. 4",
         VTK_SHADOW_CLAMPED(vtkSilhouetteShadowPass, LookupTexels)),

@@ -8,10 +8,15 @@
 // one row per penumbra width (section 2.2.1; one row for hard shadows).
 // The receivers' shader declares, before this file, the soft variant's
 // samples a point takes, how far those around it lie, in penumbra
-// half-widths, and the turn from one to the next
+// half-widths, and the turn from one to the next: the paper's
+// (silhouette...) and those where penumbrae overlap (silhouetteOverlap...);
+// and how much the paper's profiles narrow
 // (vtkSilhouetteShadowPass::GetReceiverCode):
 //   const int silhouetteSamples; const float silhouetteSpread;
 //   const vec2 silhouetteTurn; // cos, sin
+//   const int silhouetteOverlapSamples; const float silhouetteOverlapSpread;
+//   const vec2 silhouetteOverlapTurn;
+//   const float silhouetteNarrowing; // the paper's set's
 // Uses: vtkSoftShadowReceiverFS.glsl (vtkShadowReceiverInMap) and
 // vtkShadowCubeLookupFS.glsl (vtkShadowCubeFace, vtkShadowCubeDirection), which
 // the receivers' shader declares before it;
@@ -27,17 +32,16 @@ uniform vec4 silhouetteLookupScale[VTK_SHADOW_LIGHTS];
 uniform float silhouetteMapSize;
 uniform vec2 silhouetteLookupSegment; // a segment's scale and first centre, T texels each: (T - 1) / 4T, 1 / 8T
 // Where the samples around the point lie, in units of their reach: (0, 1),
-// then each turned by silhouetteTurn (a full turn over their count) from
+// then each turned by their set's turn (a full turn over their count) from
 // the one before: section 2.2.1's three, 120 degrees apart, or more, which
 // sum overlapping penumbrae (docs/quality.md). Turned, not read from an
 // array, whose size would tell the compiler the loop's most iterations, and
 // have it unrolled into samples that run for every pixel
-// (silhouetteOuterSamples()).
+// (silhouetteRingFor()).
 const vec2 silhouetteFirstAround = vec2(0.0, 1.0);
-vec2 silhouetteNextAround(vec2 d)
+vec2 silhouetteNextAround(vec2 d, vec2 turn)
 {
-  return vec2(silhouetteTurn.x * d.x - silhouetteTurn.y * d.y,
-    silhouetteTurn.y * d.x + silhouetteTurn.x * d.y);
+  return vec2(turn.x * d.x - turn.y * d.y, turn.y * d.x + turn.x * d.y);
 }
 
 // Eq. 4 and, for soft shadows, the row of the penumbra's width: the
@@ -47,9 +51,11 @@ vec2 silhouetteNextAround(vec2 d)
 // size and K (r - e) / (e r) behind a spot light's radius, with r and e the
 // distances along the light's axis; both are proportional to the map depths'
 // difference (for a perspective map 1 / e - 1 / r is), so one scale per
-// light serves (vtkSilhouetteShadowPass::GetReceiverCode).
+// light serves (vtkSilhouetteShadowPass::GetReceiverCode). The profile
+// is the row of the width times `narrowing`, for samples spread around the
+// point.
 float silhouetteResolve(sampler2D lookup, vec2 edge, float z, float occluded, int i, bool soft,
-  out float width)
+  float narrowing, out float width)
 {
   vec4 scale = silhouetteLookupScale[i];
   float inFront = edge.y < z ? 1.0 : 0.0; // z_E < z
@@ -59,7 +65,7 @@ float silhouetteResolve(sampler2D lookup, vec2 edge, float z, float occluded, in
     (silhouetteLookupSegment.y + 0.25 * occluded + 0.5 * inFront); // eq. 4
   // The penumbra's half-width, clamped to the widest the lookup holds.
   width = soft && inFront > 0.0 ? min(scale.x * (z - edge.y), silhouetteBand[i].y) : 0.0;
-  return texture(lookup, vec2(coord, width * scale.z + scale.w)).r;
+  return texture(lookup, vec2(coord, width * narrowing * scale.z + scale.w)).r;
 }
 
 // The silhouette's depth at a sample from the four texels around it: the
@@ -112,24 +118,84 @@ bool silhouetteNone(vec4 d4, int i)
   return all(lessThanEqual(d4, vec4(-2.0 * silhouetteBand[i].x)));
 }
 
-// Section 2.2.1's samples around the point: they take its silhouette's
-// depth (`own` false) rather than gather their own, which spares a third of
-// a soft sample's texture reads and leaves the error against the ray-cast
-// truth as it was (docs/benchmarks.md). They are taken only where the
-// point's own sample lies in a penumbra (width > 0): elsewhere their reach
-// is 0 and they would repeat it. A loop whose count varies runs once,
-// masked, for a group of pixels none of which enters it, where unrolled
-// samples ran for every pixel.
-int silhouetteOuterSamples(float width)
+// The signed distance at a sample from the four texels around it (d4, in
+// gather order; f: the position between them) and its gradient in texels a
+// texel; `known` false where one of them has no silhouette near.
+vec3 silhouetteField(vec4 d4, vec2 f, int i, out bool known)
 {
-  return width > 0.0 ? silhouetteSamples - 1 : 0;
+  known = all(greaterThan(d4, vec4(-2.0 * silhouetteBand[i].x)));
+  return vec3(mix(mix(d4.w, d4.z, f.x), mix(d4.x, d4.y, f.x), f.y),
+    mix(d4.z - d4.w, d4.y - d4.x, f.y), mix(d4.x - d4.w, d4.y - d4.z, f.x));
+}
+
+// Section 2.2.1's samples follow the profile of one straight silhouette,
+// whose distance grows a texel a texel along its gradient. How far the
+// distance `reach` texels to one side of the point (`found`, read up to
+// half a texel diagonal off; `seen` false where the map keeps none) misses
+// the `expected` of one edge: where the map keeps no distance, one edge
+// lies beyond the band.
+float silhouetteMiss(float found, bool seen, float expected, float reach, int i)
+{
+  float band = silhouetteBand[i].x;
+  return seen
+    ? max(abs(clamp(found, -band, band) - clamp(expected, -band, band)) - 0.75, 0.0)
+    : (abs(expected) > band - 2.0 ? 0.0 : reach);
+}
+
+// From 0, the penumbra of a lone edge, whose profile the paper's samples
+// follow, to 1, another silhouette within reach, whose penumbra overlaps:
+// a ridge of the distance between the two (its gradient flattens), or the
+// distance to either side off one edge's by `miss` (silhouetteMiss()).
+float silhouetteCrowdingOf(float slope, float miss, float width)
+{
+  return max(1.0 - smoothstep(0.5, 0.9, slope), smoothstep(0.1, 0.4, miss / width));
+}
+
+// The samples around a point in a penumbra `width` texels wide: `count`
+// of them, `spread` half-widths off it, turned by `turn` from one to the
+// next (from silhouetteFirstAround), their profiles narrowed by `narrowing`.
+// Where one silhouette's penumbra falls (crowding 0), section 2.2.1's:
+// silhouetteSamples - 1 at silhouetteSpread. Where others' overlap,
+// silhouetteOverlapSamples - 1, spread out to silhouetteOverlapSpread as
+// the crowding grows: each follows its own nearest silhouette, so together
+// they add the penumbrae up (docs/quality.md). The point keeps its
+// profile (silhouetteNarrowing), and the ring's narrows so that the mean
+// keeps the light disc's second moment, which for the paper's set is
+// silhouetteNarrowing again (SampleNarrowing() in
+// vtkSilhouetteShadowPass.cxx). None outside a penumbra, where their reach
+// is 0 and they would repeat the point. A loop whose count varies runs
+// once, masked, for a group of pixels none of which enters it, where
+// unrolled samples ran for every pixel.
+struct silhouetteRing
+{
+  int count;
+  float spread;
+  float narrowing;
+  vec2 turn;
+};
+
+silhouetteRing silhouetteRingFor(float width, float crowding)
+{
+  bool overlap = crowding > 0.0;
+  silhouetteRing ring;
+  ring.count = width <= 0.0 ? 0 : (overlap ? silhouetteOverlapSamples : silhouetteSamples) - 1;
+  ring.spread =
+    overlap ? mix(silhouetteSpread, silhouetteOverlapSpread, crowding) : silhouetteSpread;
+  ring.turn = overlap ? silhouetteOverlapTurn : silhouetteTurn;
+  // Per axis, a disc profile of radius r adds r^2 / 4, a ring of radius s
+  // r adds s^2 r^2 / 2 for its `count` samples out of count + 1.
+  ring.narrowing = sqrt(max(1.0 +
+      (1.0 - silhouetteNarrowing * silhouetteNarrowing) / float(max(ring.count, 1)) -
+      2.0 * ring.spread * ring.spread,
+    0.0));
+  return ring;
 }
 
 #if VTK_SHADOW_MAPS > 0
 // One sample at map point p of a spot or directional light; `depth`, its
 // silhouette's depth, found if `own`, else given.
 float silhouetteSample(sampler2DShadow map, sampler2D silhouettes, sampler2D lookup, vec3 p,
-  int i, bool soft, bool own, inout float depth, out float width)
+  int i, bool soft, bool own, float narrowing, inout float depth, out float width)
 {
   float lit = dot(textureGather(map, p.xy, p.z), vec4(1.0));
   vec4 d4 = textureGather(silhouettes, p.xy, 0);
@@ -150,7 +216,38 @@ float silhouetteSample(sampler2DShadow map, sampler2D silhouettes, sampler2D loo
   {
     edge.x = -silhouetteBand[i].x;
   }
-  return silhouetteResolve(lookup, edge, p.z, lit == 0.0 ? 1.0 : 0.0, i, soft, width);
+  return silhouetteResolve(
+    lookup, edge, p.z, lit == 0.0 ? 1.0 : 0.0, i, soft, narrowing, width);
+}
+
+// How crowded the penumbra `width` texels wide about map point p is
+// (silhouetteCrowdingOf()), from the distance half a width to either side
+// along its gradient (p's own gather is the sample's, which the compiler
+// shares). The two probes read one texel each, not four: on llvmpipe every
+// fragment pays for them, in a penumbra or not.
+float silhouetteCrowding(sampler2D silhouettes, vec2 p, float width, int i)
+{
+  bool known;
+  vec3 field = silhouetteField(
+    textureGather(silhouettes, p, 0), fract(p * silhouetteMapSize - 0.5), i, known);
+  float slope = length(field.yz);
+  if (!known || slope < 1.0e-3)
+  {
+    return known ? 1.0 : 0.0;
+  }
+  float reach = 0.5 * width;
+  vec2 step = field.yz / slope * reach;
+  float miss = 0.0;
+  for (int side = -1; side <= 1; side += 2)
+  {
+    ivec2 texel = clamp(ivec2(p * silhouetteMapSize + float(side) * step), ivec2(0),
+      ivec2(int(silhouetteMapSize) - 1));
+    float found = texelFetch(silhouettes, texel, 0).r;
+    miss = max(miss,
+      silhouetteMiss(found, found > -2.0 * silhouetteBand[i].x, field.x + float(side) * reach,
+        reach, i));
+  }
+  return silhouetteCrowdingOf(slope, miss, width);
 }
 
 // How a spot or directional light's map depth changes across the receiver
@@ -174,9 +271,9 @@ vec2 silhouetteDepthSlope(vec3 p)
 }
 
 // Light i's visibility at a receiver (view-space point and unit normal).
-// Soft: the point and silhouetteSamples - 1 around it, silhouetteSpread
-// penumbra half-widths away (section 2.2.1), averaged; the lookup's
-// profiles are narrowed to match (vtkSilhouetteShadowPass::BuildLookup).
+// Soft, in a penumbra: the mean of the point and the samples around it
+// (silhouetteRingFor()): section 2.2.1's where one silhouette's penumbra
+// falls, more and wider where others' overlap it.
 float silhouetteVisibility(sampler2DShadow map, sampler2D silhouettes, sampler2D lookup,
   vec3 positionVC, vec3 normalVC, int i, bool soft)
 {
@@ -189,23 +286,28 @@ float silhouetteVisibility(sampler2DShadow map, sampler2D silhouettes, sampler2D
   }
   float depth = 1.0;
   float width;
-  float visibility = silhouetteSample(map, silhouettes, lookup, p, i, soft, true, depth, width);
+  float point = silhouetteSample(
+    map, silhouettes, lookup, p, i, soft, true, silhouetteNarrowing, depth, width);
   if (!soft)
   {
-    return visibility;
+    return point;
   }
-  float reach = silhouetteSpread * width / silhouetteMapSize;
+  float crowding = silhouetteOverlapSamples > 1 && width > 0.0
+    ? silhouetteCrowding(silhouettes, p.xy, width, i)
+    : 0.0;
+  silhouetteRing ring = silhouetteRingFor(width, crowding);
+  float visibility = point;
   vec2 around = silhouetteFirstAround;
-  int outer = silhouetteOuterSamples(width);
-  for (int k = 0; k < outer; ++k)
+  for (int k = 0; k < ring.count; ++k)
   {
+    vec2 offset = ring.spread * width / silhouetteMapSize * around;
     float unused;
-    vec2 offset = reach * around;
     visibility += silhouetteSample(map, silhouettes, lookup,
-      vec3(p.xy + offset, p.z + dot(slope, offset)), i, soft, false, depth, unused);
-    around = silhouetteNextAround(around);
+      vec3(p.xy + offset, p.z + dot(slope, offset)), i, soft, false, ring.narrowing, depth,
+      unused);
+    around = silhouetteNextAround(around, ring.turn);
   }
-  return visibility / float(1 + outer); // the mean of the samples taken
+  return visibility / float(1 + ring.count); // the mean of the samples taken
 }
 #endif
 
@@ -215,7 +317,8 @@ float silhouetteVisibility(sampler2DShadow map, sampler2D silhouettes, sampler2D
 // depth maps are the framework's squared distances, the silhouette cube
 // holds each face's distances and depths.
 float silhouetteCubeSample(samplerCube distances, samplerCube silhouettes, sampler2D lookup,
-  vec3 v, float reference, int i, bool soft, bool own, inout float depth, out float width)
+  vec3 v, float reference, int i, bool soft, bool own, float narrowing, inout float depth,
+  out float width)
 {
   vec3 s, t;
   float axis;
@@ -242,7 +345,39 @@ float silhouetteCubeSample(samplerCube distances, samplerCube silhouettes, sampl
     edge.x = -silhouetteBand[i].x;
   }
   float z = silhouettePerspectiveDepth(silhouetteDepthRange[i], axis);
-  return silhouetteResolve(lookup, edge, z, lit == 0.0 ? 1.0 : 0.0, i, soft, width);
+  return silhouetteResolve(lookup, edge, z, lit == 0.0 ? 1.0 : 0.0, i, soft, narrowing, width);
+}
+
+// How crowded the penumbra `width` texels wide about direction v is, on
+// v's cube face (silhouetteCrowding()).
+float silhouetteCubeCrowding(samplerCube silhouettes, vec3 v, float width, int i)
+{
+  vec3 s, t;
+  float axis;
+  vtkShadowCubeFace(v, s, t, axis);
+  vec2 st = (vec2(dot(v, s), dot(v, t)) / axis * 0.5 + 0.5) * silhouetteMapSize;
+  bool known;
+  vec3 field = silhouetteField(textureGather(silhouettes, v, 0), fract(st - 0.5), i, known);
+  float slope = length(field.yz);
+  if (!known || slope < 1.0e-3)
+  {
+    return known ? 1.0 : 0.0;
+  }
+  float reach = 0.5 * width;
+  // Texels of this face as a direction: 2 / size of the axis distance each.
+  vec2 across = field.yz / slope * (reach * 2.0 * axis / silhouetteMapSize);
+  vec3 step = across.x * s + across.y * t;
+  float miss = 0.0;
+  for (int side = -1; side <= 1; side += 2)
+  {
+    // Filtered: where a cleared texel mixes in, the distance reads far
+    // below the band, as none.
+    float found = texture(silhouettes, v + float(side) * step).r;
+    miss = max(miss,
+      silhouetteMiss(found, found > -2.0 * silhouetteBand[i].x, field.x + float(side) * reach,
+        reach, i));
+  }
+  return silhouetteCrowdingOf(slope, miss, width);
 }
 
 // Light i's visibility (a point light, its cube map `distances` centred on
@@ -257,12 +392,15 @@ float silhouetteCubeVisibility(samplerCube distances, samplerCube silhouettes, s
   float reference = dot(v, v) * vtkShadowDistanceBias;
   float depth = 1.0;
   float width;
-  float visibility = silhouetteCubeSample(
-    distances, silhouettes, lookup, v, reference, i, soft, true, depth, width);
+  float point = silhouetteCubeSample(distances, silhouettes, lookup, v, reference, i, soft, true,
+    silhouetteNarrowing, depth, width);
   if (!soft)
   {
-    return visibility;
+    return point;
   }
+  float crowding = silhouetteOverlapSamples > 1 && width > 0.0
+    ? silhouetteCubeCrowding(silhouettes, v, width, i)
+    : 0.0;
   // The samples around the point, on the point's cube face (a texel there is
   // 2 / size of the axis distance), each where its direction meets the
   // receiver's plane: compared at the point's own distance, a receiver
@@ -270,21 +408,22 @@ float silhouetteCubeVisibility(samplerCube distances, samplerCube silhouettes, s
   vec3 s, t;
   float axis;
   vtkShadowCubeFace(v, s, t, axis);
-  float reach = silhouetteSpread * width * 2.0 * axis / silhouetteMapSize;
+  float texel = width * 2.0 * axis / silhouetteMapSize;
   float facing = dot(normalWC, v);
+  silhouetteRing ring = silhouetteRingFor(width, crowding);
+  float visibility = point;
   vec2 d = silhouetteFirstAround;
-  int outer = silhouetteOuterSamples(width);
-  for (int k = 0; k < outer; ++k)
+  for (int k = 0; k < ring.count; ++k)
   {
-    float unused;
-    vec3 around = v + reach * (d.x * s + d.y * t);
+    vec3 around = v + ring.spread * texel * (d.x * s + d.y * t);
     float along = dot(normalWC, around);
     around *= along * facing > 1.0e-12 * dot(around, around) ? facing / along : 1.0;
+    float unused;
     visibility += silhouetteCubeSample(distances, silhouettes, lookup, around,
-      dot(around, around) * vtkShadowDistanceBias, i, soft, false, depth, unused);
-    d = silhouetteNextAround(d);
+      dot(around, around) * vtkShadowDistanceBias, i, soft, false, ring.narrowing, depth, unused);
+    d = silhouetteNextAround(d, ring.turn);
   }
-  return visibility / float(1 + outer); // the mean of the samples taken
+  return visibility / float(1 + ring.count); // the mean of the samples taken
 }
 #endif
 
