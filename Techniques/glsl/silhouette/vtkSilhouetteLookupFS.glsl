@@ -223,8 +223,8 @@ float silhouetteSample(sampler2DShadow map, sampler2D silhouettes, sampler2D loo
 // How crowded the penumbra `width` texels wide about map point p is
 // (silhouetteCrowdingOf()), from the distance half a width to either side
 // along its gradient (p's own gather is the sample's, which the compiler
-// shares). The two probes read one texel each, not four: on llvmpipe every
-// fragment pays for them, in a penumbra or not.
+// shares). The two probes read one texel each: four cost more and found
+// the same (docs/quality.md).
 float silhouetteCrowding(sampler2D silhouettes, vec2 p, float width, int i)
 {
   bool known;
