@@ -136,7 +136,9 @@ public:
    * (docs/quality.md). 1 takes the paper's samples everywhere. Defaults 1
    * and 0.6: 8 meet the truth's steadiness under a grate and lower the
    * error on most scenes, but raise it where a low occluder's edge lies in
-   * another's penumbra, and cost about a tenth more on llvmpipe.
+   * another's penumbra, and cost more on llvmpipe: a sixth more
+   * instructions on a crowded scene, 10-15% more time at 1920x1080
+   * (docs/benchmarks.md).
    */
   vtkSetClampMacro(OverlapSamples, int, 1, 64);
   vtkGetMacro(OverlapSamples, int);

@@ -142,13 +142,33 @@ float silhouetteMiss(float found, bool seen, float expected, float reach, int i)
     : (abs(expected) > band - 2.0 ? 0.0 : reach);
 }
 
-// From 0, the penumbra of a lone edge, whose profile the paper's samples
-// follow, to 1, another silhouette within reach, whose penumbra overlaps:
-// a ridge of the distance between the two (its gradient flattens), or the
-// distance to either side off one edge's by `miss` (silhouetteMiss()).
-float silhouetteCrowdingOf(float slope, float miss, float width)
+// How crowded the penumbra `width` texels wide about a point is, from its
+// distance field (silhouetteField()) and what the map holds half a width to
+// either side along the field's gradient (`found`, behind and ahead; the
+// caller reads them at silhouetteCrowdingReach()). From 0, the penumbra of
+// a lone edge, whose profile the paper's samples follow, to 1, another
+// silhouette within reach, whose penumbra overlaps: a ridge of the distance
+// between the two (its gradient flattens), or the distance to either side
+// off one edge's (silhouetteMiss()).
+float silhouetteCrowdingFrom(vec3 field, vec2 found, float width, int i)
 {
-  return max(1.0 - smoothstep(0.5, 0.9, slope), smoothstep(0.1, 0.4, miss / width));
+  float reach = 0.5 * width;
+  float none = -2.0 * silhouetteBand[i].x;
+  float miss = max(silhouetteMiss(found.x, found.x > none, field.x - reach, reach, i),
+    silhouetteMiss(found.y, found.y > none, field.x + reach, reach, i));
+  return max(1.0 - smoothstep(0.5, 0.9, length(field.yz)), smoothstep(0.1, 0.4, miss / width));
+}
+
+// Where silhouetteCrowdingFrom() needs the map read: `reach` texels along
+// the field's unit gradient to either side. False, with the crowding
+// itself, where the field tells it alone: no silhouette near (0) or a flat
+// field, the ridge between two (1).
+bool silhouetteCrowdingReach(vec3 field, bool known, float width, out vec2 reach, out float crowding)
+{
+  float slope = length(field.yz);
+  crowding = known ? 1.0 : 0.0;
+  reach = known && slope >= 1.0e-3 ? field.yz / slope * (0.5 * width) : vec2(0.0);
+  return known && slope >= 1.0e-3;
 }
 
 // The samples around a point in a penumbra `width` texels wide: `count`
@@ -230,24 +250,17 @@ float silhouetteCrowding(sampler2D silhouettes, vec2 p, float width, int i)
   bool known;
   vec3 field = silhouetteField(
     textureGather(silhouettes, p, 0), fract(p * silhouetteMapSize - 0.5), i, known);
-  float slope = length(field.yz);
-  if (!known || slope < 1.0e-3)
+  vec2 reach;
+  float crowding;
+  if (!silhouetteCrowdingReach(field, known, width, reach, crowding))
   {
-    return known ? 1.0 : 0.0;
+    return crowding;
   }
-  float reach = 0.5 * width;
-  vec2 step = field.yz / slope * reach;
-  float miss = 0.0;
-  for (int side = -1; side <= 1; side += 2)
-  {
-    ivec2 texel = clamp(ivec2(p * silhouetteMapSize + float(side) * step), ivec2(0),
-      ivec2(int(silhouetteMapSize) - 1));
-    float found = texelFetch(silhouettes, texel, 0).r;
-    miss = max(miss,
-      silhouetteMiss(found, found > -2.0 * silhouetteBand[i].x, field.x + float(side) * reach,
-        reach, i));
-  }
-  return silhouetteCrowdingOf(slope, miss, width);
+  ivec2 last = ivec2(int(silhouetteMapSize) - 1);
+  vec2 texel = p * silhouetteMapSize;
+  vec2 found = vec2(texelFetch(silhouettes, clamp(ivec2(texel - reach), ivec2(0), last), 0).r,
+    texelFetch(silhouettes, clamp(ivec2(texel + reach), ivec2(0), last), 0).r);
+  return silhouetteCrowdingFrom(field, found, width, i);
 }
 
 // How a spot or directional light's map depth changes across the receiver
@@ -358,26 +371,19 @@ float silhouetteCubeCrowding(samplerCube silhouettes, vec3 v, float width, int i
   vec2 st = (vec2(dot(v, s), dot(v, t)) / axis * 0.5 + 0.5) * silhouetteMapSize;
   bool known;
   vec3 field = silhouetteField(textureGather(silhouettes, v, 0), fract(st - 0.5), i, known);
-  float slope = length(field.yz);
-  if (!known || slope < 1.0e-3)
+  vec2 reach;
+  float crowding;
+  if (!silhouetteCrowdingReach(field, known, width, reach, crowding))
   {
-    return known ? 1.0 : 0.0;
+    return crowding;
   }
-  float reach = 0.5 * width;
   // Texels of this face as a direction: 2 / size of the axis distance each.
-  vec2 across = field.yz / slope * (reach * 2.0 * axis / silhouetteMapSize);
-  vec3 step = across.x * s + across.y * t;
-  float miss = 0.0;
-  for (int side = -1; side <= 1; side += 2)
-  {
-    // Filtered: where a cleared texel mixes in, the distance reads far
-    // below the band, as none.
-    float found = texture(silhouettes, v + float(side) * step).r;
-    miss = max(miss,
-      silhouetteMiss(found, found > -2.0 * silhouetteBand[i].x, field.x + float(side) * reach,
-        reach, i));
-  }
-  return silhouetteCrowdingOf(slope, miss, width);
+  reach *= 2.0 * axis / silhouetteMapSize;
+  vec3 step = reach.x * s + reach.y * t;
+  // Filtered: where a cleared texel mixes in, the distance reads far below
+  // the band, as none.
+  vec2 found = vec2(texture(silhouettes, v - step).r, texture(silhouettes, v + step).r);
+  return silhouetteCrowdingFrom(field, found, width, i);
 }
 
 // Light i's visibility (a point light, its cube map `distances` centred on
