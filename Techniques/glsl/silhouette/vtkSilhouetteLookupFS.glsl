@@ -147,22 +147,23 @@ float silhouetteMiss(float found, bool seen, float expected, float reach, int i)
 // either side along the field's gradient (`found`, behind and ahead; the
 // caller reads them at silhouetteCrowdingReach()). From 0, the penumbra of
 // a lone edge, whose profile the paper's samples follow, to 1, another
-// silhouette within reach, whose penumbra overlaps: a ridge of the distance
-// between the two (its gradient flattens), or the distance to either side
-// off one edge's (silhouetteMiss()).
+// silhouette within reach, whose penumbra overlaps, as the distance to
+// either side misses one edge's (silhouetteMiss()). (Points on the ridge
+// between two silhouettes, where the gradient flattens, miss as well: a
+// rule of their own found no more, docs/quality.md.)
 float silhouetteCrowdingFrom(vec3 field, vec2 found, float width, int i)
 {
   float reach = 0.5 * width;
   float none = -2.0 * silhouetteBand[i].x;
   float miss = max(silhouetteMiss(found.x, found.x > none, field.x - reach, reach, i),
     silhouetteMiss(found.y, found.y > none, field.x + reach, reach, i));
-  return max(1.0 - smoothstep(0.5, 0.9, length(field.yz)), smoothstep(0.1, 0.4, miss / width));
+  return smoothstep(0.1, 0.4, miss / width);
 }
 
 // Where silhouetteCrowdingFrom() needs the map read: `reach` texels along
 // the field's unit gradient to either side. False, with the crowding
-// itself, where the field tells it alone: no silhouette near (0) or a flat
-// field, the ridge between two (1).
+// itself, where the field tells it alone: no silhouette near (0) or a
+// field with no direction, the ridge between two (1).
 bool silhouetteCrowdingReach(vec3 field, bool known, float width, out vec2 reach, out float crowding)
 {
   float slope = length(field.yz);
