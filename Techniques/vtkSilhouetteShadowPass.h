@@ -137,8 +137,8 @@ public:
    * and 0.6: 8 meet the truth's steadiness under a grate and lower the
    * error on most scenes, but raise it where a low occluder's edge lies in
    * another's penumbra, and cost more on llvmpipe: a sixth more
-   * instructions on a crowded scene, 10-15% more time at 1920x1080
-   * (docs/benchmarks.md).
+   * instructions on a crowded scene, 11-22% more time at 1920x1080
+   * (docs/quality.md, "Overlapping penumbrae").
    */
   vtkSetClampMacro(OverlapSamples, int, 1, 64);
   vtkGetMacro(OverlapSamples, int);

@@ -164,7 +164,8 @@ float silhouetteCrowdingFrom(vec3 field, vec2 found, float width, int i)
 // the field's unit gradient to either side. False, with the crowding
 // itself, where the field tells it alone: no silhouette near (0) or a
 // field with no direction, the ridge between two (1).
-bool silhouetteCrowdingReach(vec3 field, bool known, float width, out vec2 reach, out float crowding)
+bool silhouetteCrowdingReach(
+  vec3 field, bool known, float width, out vec2 reach, out float crowding)
 {
   float slope = length(field.yz);
   crowding = known ? 1.0 : 0.0;
