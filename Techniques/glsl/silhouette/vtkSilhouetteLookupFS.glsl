@@ -109,13 +109,21 @@ float silhouetteEdge(vec4 d4, vec2 f, float lit, int i, out vec2 across)
   return edge;
 }
 
+// Distances at or below this mean no silhouette near: the map's clear
+// value lies far below the band, and so does a filtered read that mixes it
+// in, where every kept distance lies within the band.
+float silhouetteNoneBelow(int i)
+{
+  return -2.0 * silhouetteBand[i].x;
+}
+
 // No silhouette at any of the four texels: whatever casts there has no
 // faces the technique drew (lines, points, imposters) and casts the depth
 // map's shadow alone, the four texels' mean. (Every face's shadow edge lies
 // within its silhouette's band, at least a texel diagonal wide.)
 bool silhouetteNone(vec4 d4, int i)
 {
-  return all(lessThanEqual(d4, vec4(-2.0 * silhouetteBand[i].x)));
+  return all(lessThanEqual(d4, vec4(silhouetteNoneBelow(i))));
 }
 
 // The signed distance at a sample from the four texels around it (d4, in
@@ -123,7 +131,7 @@ bool silhouetteNone(vec4 d4, int i)
 // texel; `known` false where one of them has no silhouette near.
 vec3 silhouetteField(vec4 d4, vec2 f, int i, out bool known)
 {
-  known = all(greaterThan(d4, vec4(-2.0 * silhouetteBand[i].x)));
+  known = all(greaterThan(d4, vec4(silhouetteNoneBelow(i))));
   return vec3(mix(mix(d4.w, d4.z, f.x), mix(d4.x, d4.y, f.x), f.y),
     mix(d4.z - d4.w, d4.y - d4.x, f.y), mix(d4.x - d4.w, d4.y - d4.z, f.x));
 }
@@ -142,6 +150,10 @@ float silhouetteMiss(float found, bool seen, float expected, float reach, int i)
     : (abs(expected) > band - 2.0 ? 0.0 : reach);
 }
 
+// How far the crowding probes lie to either side of a point, in widths of
+// its penumbra.
+const float silhouetteProbeReach = 0.5;
+
 // How crowded the penumbra `width` texels wide about a point is, from its
 // distance field (silhouetteField()) and what the map holds half a width to
 // either side along the field's gradient (`found`, behind and ahead; the
@@ -153,8 +165,8 @@ float silhouetteMiss(float found, bool seen, float expected, float reach, int i)
 // rule of their own found no more, docs/quality.md.)
 float silhouetteCrowdingFrom(vec3 field, vec2 found, float width, int i)
 {
-  float reach = 0.5 * width;
-  float none = -2.0 * silhouetteBand[i].x;
+  float reach = silhouetteProbeReach * width;
+  float none = silhouetteNoneBelow(i);
   float miss = max(silhouetteMiss(found.x, found.x > none, field.x - reach, reach, i),
     silhouetteMiss(found.y, found.y > none, field.x + reach, reach, i));
   return smoothstep(0.1, 0.4, miss / width);
@@ -168,9 +180,10 @@ bool silhouetteCrowdingReach(
   vec3 field, bool known, float width, out vec2 reach, out float crowding)
 {
   float slope = length(field.yz);
+  bool directed = known && slope >= 1.0e-3;
   crowding = known ? 1.0 : 0.0;
-  reach = known && slope >= 1.0e-3 ? field.yz / slope * (0.5 * width) : vec2(0.0);
-  return known && slope >= 1.0e-3;
+  reach = directed ? field.yz / slope * (silhouetteProbeReach * width) : vec2(0.0);
+  return directed;
 }
 
 // The samples around a point in a penumbra `width` texels wide: `count`
@@ -243,7 +256,7 @@ float silhouetteSample(sampler2DShadow map, sampler2D silhouettes, sampler2D loo
 }
 
 // How crowded the penumbra `width` texels wide about map point p is
-// (silhouetteCrowdingOf()), from the distance half a width to either side
+// (silhouetteCrowdingFrom()), from the distance half a width to either side
 // along its gradient (p's own gather is the sample's, which the compiler
 // shares). The two probes read one texel each: four cost more and found
 // the same (docs/quality.md).
