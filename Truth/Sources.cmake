@@ -5,3 +5,7 @@
 # the remote-module build (cmake/RemoteModule.cmake).
 set(softshadows_truth_classes
   vtkRayCastLightVisibility)
+
+# Neither installed nor wrapped: the ray casting the module's classes share.
+set(softshadows_truth_private_classes
+  vtkRayCastScene)

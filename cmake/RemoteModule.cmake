@@ -37,6 +37,7 @@ list(TRANSFORM softshadows_techniques_private_classes PREPEND "Techniques/")
 list(TRANSFORM softshadows_techniques_private_headers PREPEND "Techniques/")
 list(TRANSFORM softshadows_techniques_catalog_sources PREPEND "Techniques/")
 list(TRANSFORM softshadows_truth_classes PREPEND "Truth/")
+list(TRANSFORM softshadows_truth_private_classes PREPEND "Truth/")
 vtk_module_add_module(VTK::RenderingSoftShadows
   CLASSES ${softshadows_filters_classes} ${softshadows_rendering_classes}
     ${softshadows_techniques_classes} ${softshadows_truth_classes}
@@ -44,7 +45,7 @@ vtk_module_add_module(VTK::RenderingSoftShadows
   NOWRAP_CLASSES ${softshadows_rendering_framework_classes}
   NOWRAP_HEADERS ${softshadows_rendering_framework_headers}
   PRIVATE_CLASSES ${softshadows_filters_private_classes} ${softshadows_rendering_private_classes}
-    ${softshadows_techniques_private_classes}
+    ${softshadows_techniques_private_classes} ${softshadows_truth_private_classes}
   PRIVATE_HEADERS ${shader_headers} ${shims} ${softshadows_filters_private_headers}
     ${softshadows_techniques_private_headers})
 vtk_module_include(VTK::RenderingSoftShadows PRIVATE Module Rendering Techniques Truth)
