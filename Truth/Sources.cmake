@@ -4,6 +4,7 @@
 # that links Embree. Shared by the standalone build (CMakeLists.txt here) and
 # the remote-module build (cmake/RemoteModule.cmake).
 set(softshadows_truth_classes
+  vtkLightVisibilityFilter
   vtkRayCastLightVisibility)
 
 # Neither installed nor wrapped: the ray casting the module's classes share.

@@ -39,7 +39,7 @@
 #define vtkRayCastLightVisibility_h
 
 #include "vtkImageAlgorithm.h"
-#include "vtkSmartPointer.h"               // for vtkSmartPointer
+#include "vtkSmartPointer.h"           // for vtkSmartPointer
 #include "vtkSoftShadowsTruthModule.h" // for export macro
 
 class vtkRenderer;

@@ -1,0 +1,411 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkLightVisibilityFilter.h"
+
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkIdList.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkPolygon.h"
+#include "vtkRayCastScene.h"
+#include "vtkSMPTools.h"
+#include "vtkShadowLightSize.h"
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkLightVisibilityFilter);
+
+namespace
+{
+// Where a point (or a cell's centre) receives light from: its position and
+// the unit normal of its surface's lit side, or zero where it has none (a
+// vertex or line), which sees every direction.
+struct Receiver
+{
+  std::vector<glm::dvec3> Positions;
+  std::vector<glm::dvec3> Normals;
+};
+
+glm::dvec3 Unit(const glm::dvec3& n)
+{
+  const double length = glm::length(n);
+  return length > 0.0 && std::isfinite(length) ? n / length : glm::dvec3(0.0);
+}
+
+// The points and their normals: the receiver's own, else computed without
+// splitting (so that point ids stay); none without polygons.
+bool PointReceivers(vtkPolyData* surface, Receiver& receiver)
+{
+  const vtkIdType n = surface->GetNumberOfPoints();
+  vtkDataArray* normals = surface->GetPointData()->GetNormals();
+  if (!normals)
+  {
+    normals = surface->GetPointData()->GetArray("Normals");
+  }
+  vtkNew<vtkPolyDataNormals> computed;
+  const bool faces = surface->GetNumberOfPolys() + surface->GetNumberOfStrips() > 0;
+  if (faces &&
+    (!normals || normals->GetNumberOfComponents() != 3 || normals->GetNumberOfTuples() != n))
+  {
+    computed->SetInputData(surface);
+    computed->SplittingOff();
+    computed->Update();
+    normals = computed->GetOutput()->GetPointData()->GetNormals();
+    if (!normals || normals->GetNumberOfTuples() != n)
+    {
+      return false;
+    }
+  }
+  receiver.Positions.resize(static_cast<size_t>(n));
+  receiver.Normals.resize(static_cast<size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double p[3], m[3] = { 0.0, 0.0, 0.0 };
+    surface->GetPoint(i, p);
+    if (faces)
+    {
+      normals->GetTuple(i, m);
+    }
+    receiver.Positions[i] = glm::dvec3(p[0], p[1], p[2]);
+    receiver.Normals[i] = Unit(glm::dvec3(m[0], m[1], m[2]));
+  }
+  return true;
+}
+
+// Each cell's centre (the mean of its points) and its polygon's normal; a
+// strip's is its triangles' (each wound as the strip alternates).
+void CellReceivers(vtkPolyData* surface, Receiver& receiver)
+{
+  const vtkIdType cells = surface->GetNumberOfCells();
+  receiver.Positions.assign(static_cast<size_t>(cells), glm::dvec3(0.0));
+  receiver.Normals.assign(static_cast<size_t>(cells), glm::dvec3(0.0));
+  vtkNew<vtkIdList> ids;
+  vtkPoints* points = surface->GetPoints();
+  auto point = [&](vtkIdType k)
+  {
+    double p[3];
+    points->GetPoint(ids->GetId(k), p);
+    return glm::dvec3(p[0], p[1], p[2]);
+  };
+  for (vtkIdType c = 0; c < cells; ++c)
+  {
+    const int type = surface->GetCellType(c);
+    surface->GetCellPoints(c, ids);
+    const vtkIdType count = ids->GetNumberOfIds();
+    glm::dvec3 centre(0.0);
+    for (vtkIdType k = 0; k < count; ++k)
+    {
+      centre += point(k);
+    }
+    receiver.Positions[c] = count > 0 ? centre / static_cast<double>(count) : centre;
+    glm::dvec3 normal(0.0);
+    if (type == VTK_TRIANGLE_STRIP)
+    {
+      for (vtkIdType k = 0; k + 2 < count; ++k)
+      {
+        const glm::dvec3 face = glm::cross(point(k + 1) - point(k), point(k + 2) - point(k));
+        normal += k % 2 == 0 ? face : -face;
+      }
+    }
+    else if (type == VTK_TRIANGLE || type == VTK_QUAD || type == VTK_POLYGON)
+    {
+      double n[3];
+      vtkPolygon::ComputeNormal(points, static_cast<int>(count), ids->GetPointer(0), n);
+      normal = glm::dvec3(n[0], n[1], n[2]);
+    }
+    receiver.Normals[c] = Unit(normal);
+  }
+}
+
+// What VTK's shading makes of a light at a point, besides its visibility
+// and the cosine: read once, before the threads.
+struct Shading
+{
+  bool On = false;
+  double Intensity = 0.0;
+  double Attenuation[3] = { 1.0, 0.0, 0.0 }; // constant, linear, quadratic
+  double Exponent = 0.0;
+
+  explicit Shading(vtkLight* light)
+    : On(light->GetSwitch() != 0)
+    , Intensity(light->GetIntensity())
+    , Exponent(light->GetExponent())
+  {
+    light->GetAttenuationValues(this->Attenuation);
+  }
+
+  // A positional light's attenuation and a spot light's cone at `at`.
+  double Falloff(const vtkRayCastScene::Light& shape, const glm::dvec3& at) const
+  {
+    if (shape.Directional)
+    {
+      return 1.0;
+    }
+    const glm::dvec3 offset = at - shape.Position;
+    const double distance = glm::length(offset);
+    const double* k = this->Attenuation;
+    const double denominator = k[0] + k[1] * distance + k[2] * distance * distance;
+    double falloff = denominator > 0.0 ? 1.0 / denominator : 0.0;
+    if (shape.Spot && distance > 0.0)
+    {
+      const double coneDot = glm::dot(offset / distance, shape.Axis);
+      falloff *= coneDot >= std::cos(shape.ConeAngle) ? std::pow(coneDot, this->Exponent) : 0.0;
+    }
+    return falloff;
+  }
+};
+}
+
+//------------------------------------------------------------------------------
+vtkLightVisibilityFilter::vtkLightVisibilityFilter()
+{
+  this->SetNumberOfInputPorts(2);
+}
+
+vtkLightVisibilityFilter::~vtkLightVisibilityFilter() = default;
+
+//------------------------------------------------------------------------------
+int vtkLightVisibilityFilter::FillInputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+    info->Set(vtkAlgorithm::INPUT_IS_REPEATABLE(), 1);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightVisibilityFilter::AddCasterConnection(vtkAlgorithmOutput* caster)
+{
+  this->AddInputConnection(1, caster);
+}
+
+void vtkLightVisibilityFilter::AddCasterData(vtkDataObject* caster)
+{
+  this->AddInputDataInternal(1, caster);
+}
+
+void vtkLightVisibilityFilter::RemoveAllCasters()
+{
+  this->SetInputConnection(1, nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkLightVisibilityFilter::SetLights(vtkLightCollection* lights)
+{
+  if (this->Lights != lights)
+  {
+    this->Lights = lights;
+    this->Modified();
+  }
+}
+
+vtkLightCollection* vtkLightVisibilityFilter::GetLights() const
+{
+  return this->Lights;
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkLightVisibilityFilter::GetMTime()
+{
+  vtkMTimeType time = this->Superclass::GetMTime();
+  if (this->Lights)
+  {
+    time = std::max(time, this->Lights->GetMTime());
+    vtkCollectionSimpleIterator it;
+    this->Lights->InitTraversal(it);
+    while (vtkLight* light = this->Lights->GetNextLight(it))
+    {
+      time = std::max(time, light->GetMTime());
+    }
+  }
+  return time;
+}
+
+//------------------------------------------------------------------------------
+int vtkLightVisibilityFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* surface = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  if (!surface)
+  {
+    vtkErrorMacro(<< "no receiver: input 0 must be a vtkPolyData.");
+    return 0;
+  }
+  std::vector<vtkLight*> sources;
+  if (this->Lights)
+  {
+    vtkCollectionSimpleIterator it;
+    this->Lights->InitTraversal(it);
+    while (vtkLight* light = this->Lights->GetNextLight(it))
+    {
+      sources.push_back(light);
+    }
+  }
+  if (sources.empty())
+  {
+    vtkErrorMacro(<< "no lights: SetLights() with at least one light.");
+    return 0;
+  }
+  std::vector<vtkRayCastScene::Light> lights(sources.size());
+  std::vector<Shading> shading;
+  for (size_t l = 0; l < sources.size(); ++l)
+  {
+    shading.emplace_back(sources[l]);
+    std::string error;
+    if (!vtkRayCastScene::MakeLight(sources[l], lights[l], error))
+    {
+      vtkErrorMacro(<< "light " << l << " " << error);
+      return 0;
+    }
+  }
+  const vtkIdType points = surface->GetNumberOfPoints();
+  for (vtkIdType i = 0; i < points; ++i)
+  {
+    double p[3];
+    surface->GetPoint(i, p);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    {
+      vtkErrorMacro(<< "receiver point " << i << " is not finite (" << p[0] << ", " << p[1] << ", "
+                    << p[2] << ").");
+      return 0;
+    }
+  }
+
+  // The receiver and every caster, opaque; the extent of all of them sets
+  // how far off its surface a shadow ray starts (above float rounding of the
+  // points, far below any gap a scene means).
+  vtkRayCastScene scene;
+  const glm::dmat4 world(1.0);
+  scene.AddPolyData(surface, world, true);
+  double bounds[6];
+  surface->GetBounds(bounds);
+  const int casters = this->GetNumberOfInputConnections(1);
+  for (int c = 0; c < casters; ++c)
+  {
+    vtkPolyData* caster = vtkPolyData::GetData(inputVector[1], c);
+    if (!caster || caster->GetNumberOfPoints() == 0)
+    {
+      continue;
+    }
+    scene.AddPolyData(caster, world, true);
+    double more[6];
+    caster->GetBounds(more);
+    for (int k = 0; k < 3; ++k)
+    {
+      bounds[2 * k] = std::min(bounds[2 * k], more[2 * k]);
+      bounds[2 * k + 1] = std::max(bounds[2 * k + 1], more[2 * k + 1]);
+    }
+  }
+  double extent =
+    glm::length(glm::dvec3(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]));
+  extent = bounds[0] <= bounds[1] && std::isfinite(extent) && extent > 0.0 ? extent : 1.0;
+  const double offset = 1.0e-5 * extent;
+  std::string error;
+  if (!scene.Commit(error))
+  {
+    vtkErrorMacro(<< error);
+    return 0;
+  }
+
+  output->ShallowCopy(surface);
+  const int strata = std::max(1, static_cast<int>(std::lround(std::sqrt(this->Samples))));
+  const unsigned int seed = this->Seed;
+  const int count = static_cast<int>(lights.size());
+
+  // Both attributes, each in bands of 16 so that progress is reported from
+  // this thread, as VTK's observers expect; each band runs on every core.
+  const bool both = this->PointVisibility && this->CellVisibility;
+  int band = 0;
+  auto compute = [&](const Receiver& receiver, vtkDataSetAttributes* attributes)
+  {
+    const vtkIdType n = static_cast<vtkIdType>(receiver.Positions.size());
+    vtkNew<vtkFloatArray> visibility;
+    visibility->SetName("LightVisibility");
+    visibility->SetNumberOfComponents(count);
+    visibility->SetNumberOfTuples(n);
+    vtkNew<vtkFloatArray> irradiance;
+    irradiance->SetName("Irradiance");
+    irradiance->SetNumberOfTuples(n);
+    const int bands = both ? 16 : 32;
+    for (int b = 0; b < bands; ++b, ++band)
+    {
+      vtkSMPTools::For(n * b / bands, n * (b + 1) / bands,
+        [&](vtkIdType first, vtkIdType last)
+        {
+          for (vtkIdType i = first; i < last; ++i)
+          {
+            const glm::dvec3& at = receiver.Positions[i];
+            const glm::dvec3& normal = receiver.Normals[i];
+            const glm::dvec2 jitter = vtkRayCastScene::Jitter(static_cast<unsigned int>(i), seed);
+            double sum = 0.0;
+            for (int l = 0; l < count; ++l)
+            {
+              const vtkRayCastScene::Sight sight =
+                scene.See(lights[l], at, normal, strata, jitter, offset);
+              visibility->SetTypedComponent(i, l, static_cast<float>(sight.Visible));
+              if (shading[l].On)
+              {
+                const double cosine = normal == glm::dvec3(0.0) ? 1.0 : std::max(sight.Facing, 0.0);
+                sum +=
+                  sight.Visible * cosine * shading[l].Intensity * shading[l].Falloff(lights[l], at);
+              }
+            }
+            irradiance->SetValue(i, static_cast<float>(sum));
+          }
+        });
+      this->UpdateProgress(static_cast<double>(band + 1) / 32.0);
+    }
+    attributes->AddArray(visibility);
+    attributes->AddArray(irradiance);
+  };
+
+  this->UpdateProgress(0.0);
+  if (this->PointVisibility)
+  {
+    Receiver receiver;
+    if (!PointReceivers(surface, receiver))
+    {
+      vtkErrorMacro(<< "the receiver's point normals could not be computed.");
+      return 0;
+    }
+    compute(receiver, output->GetPointData());
+  }
+  if (this->CellVisibility)
+  {
+    Receiver receiver;
+    CellReceivers(surface, receiver);
+    compute(receiver, output->GetCellData());
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightVisibilityFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Lights: " << this->Lights.Get() << "\n";
+  os << indent << "Samples: " << this->Samples << "\n";
+  os << indent << "Seed: " << this->Seed << "\n";
+  os << indent << "PointVisibility: " << this->PointVisibility << "\n";
+  os << indent << "CellVisibility: " << this->CellVisibility << "\n";
+}

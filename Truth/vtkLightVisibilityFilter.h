@@ -1,0 +1,127 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class   vtkLightVisibilityFilter
+ * @brief   Shadows as data: how much of each light every point (or cell) of
+ *          a surface sees, by ray casting.
+ *
+ * Input 0 is the receiving surface; input 1, optional and repeatable
+ * (AddCasterConnection()), the geometry that casts shadows on it. The
+ * receiver casts onto itself too. Both are in world coordinates; only
+ * polygons and strips cast and receive. The lights (SetLights()) are taken
+ * where they shine in the world (their transformed position and focal
+ * point), each with the module's light size (vtkShadowLightSize): spot and
+ * point lights are spheres of that radius, directional lights cones of
+ * directions of that angular radius, sampled by Samples stratified rays as
+ * the ground truth samples them (vtkRayCastLightVisibility). Camera lights
+ * and headlights are taken where their position says, as no camera is at
+ * hand.
+ *
+ * The output is the receiver with, on its points (PointVisibility, on by
+ * default) and on its cells (CellVisibility, off by default; from each
+ * cell's centre and its polygon's normal):
+ * - "LightVisibility", one component a light, in the collection's order:
+ *   the visible fraction of the light, 0..1. A point reads 0 for a light
+ *   behind its surface (the side its normal points away from). Point
+ *   normals are the receiver's own ("Normals", or its active normals) or,
+ *   without them, computed as vtkPolyDataNormals does without splitting.
+ * - "Irradiance": the direct irradiance the switched-on lights bring, the
+ *   sum of visibility x cos(angle to the light's centre) x intensity, times
+ *   a positional light's attenuation (VTK's constant, linear and quadratic
+ *   terms) and a spot light's cone (its exponent inside, 0 outside), as
+ *   VTK's lights shade.
+ *
+ * Errors (vtkErrorMacro, no output): no receiver, no lights, a receiver
+ * point that is not finite. Reports progress (ProgressEvent) in 32 bands.
+ */
+
+#ifndef vtkLightVisibilityFilter_h
+#define vtkLightVisibilityFilter_h
+
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkSmartPointer.h"           // for vtkSmartPointer
+#include "vtkSoftShadowsTruthModule.h" // for export macro
+
+class vtkLightCollection;
+
+class VTKSOFTSHADOWSTRUTH_EXPORT vtkLightVisibilityFilter : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkLightVisibilityFilter* New();
+  vtkTypeMacro(vtkLightVisibilityFilter, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Geometry that casts shadows on the receiver (input 1), in addition to
+   * the receiver itself.
+   */
+  void AddCasterConnection(vtkAlgorithmOutput* caster);
+  void AddCasterData(vtkDataObject* caster);
+  void RemoveAllCasters();
+  ///@}
+
+  ///@{
+  /**
+   * The lights. Default none, which is an error.
+   */
+  void SetLights(vtkLightCollection* lights);
+  vtkLightCollection* GetLights() const;
+  ///@}
+
+  ///@{
+  /**
+   * Rays a light and a point, rounded to a square number (stratified).
+   * Default 64.
+   */
+  vtkSetClampMacro(Samples, int, 1, 65536);
+  vtkGetMacro(Samples, int);
+  ///@}
+
+  ///@{
+  /**
+   * The seed of each point's jitter of the stratified pattern. Default 1.
+   */
+  vtkSetMacro(Seed, unsigned int);
+  vtkGetMacro(Seed, unsigned int);
+  ///@}
+
+  ///@{
+  /**
+   * Whether the arrays are computed on the points (default on) and on the
+   * cells (default off).
+   */
+  vtkSetMacro(PointVisibility, bool);
+  vtkGetMacro(PointVisibility, bool);
+  vtkBooleanMacro(PointVisibility, bool);
+  vtkSetMacro(CellVisibility, bool);
+  vtkGetMacro(CellVisibility, bool);
+  vtkBooleanMacro(CellVisibility, bool);
+  ///@}
+
+  /**
+   * Includes the lights' modification times: moving a light casts again.
+   */
+  vtkMTimeType GetMTime() override;
+
+protected:
+  vtkLightVisibilityFilter();
+  ~vtkLightVisibilityFilter() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  int Samples = 64;
+  unsigned int Seed = 1;
+  bool PointVisibility = true;
+  bool CellVisibility = false;
+
+private:
+  vtkLightVisibilityFilter(const vtkLightVisibilityFilter&) = delete;
+  void operator=(const vtkLightVisibilityFilter&) = delete;
+
+  vtkSmartPointer<vtkLightCollection> Lights;
+};
+
+#endif
