@@ -5,7 +5,8 @@
 # the remote-module build (cmake/RemoteModule.cmake).
 set(softshadows_truth_classes
   vtkLightVisibilityFilter
-  vtkRayCastLightVisibility)
+  vtkRayCastLightVisibility
+  vtkSolarPosition)
 
 # Neither installed nor wrapped: the ray casting the module's classes share.
 set(softshadows_truth_private_classes

@@ -20,9 +20,11 @@
 #include "vtkRayCastScene.h"
 #include "vtkSMPTools.h"
 #include "vtkShadowLightSize.h"
+#include "vtkSolarPosition.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
+#include <glm/vec4.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -172,6 +174,15 @@ struct Shading
 };
 }
 
+// The sun as a directional light from each of its directions, and the
+// hours each stands for.
+struct vtkLightVisibilitySunStep
+{
+  vtkRayCastScene::Light Shape;
+  double Hours = 0.0;
+};
+using SunStep = vtkLightVisibilitySunStep;
+
 //------------------------------------------------------------------------------
 vtkLightVisibilityFilter::vtkLightVisibilityFilter()
 {
@@ -224,6 +235,22 @@ vtkLightCollection* vtkLightVisibilityFilter::GetLights() const
 }
 
 //------------------------------------------------------------------------------
+void vtkLightVisibilityFilter::AddSunDirection(double x, double y, double z, double hours)
+{
+  this->SunDirections.push_back({ x, y, z, hours });
+  this->Modified();
+}
+
+void vtkLightVisibilityFilter::RemoveAllSunDirections()
+{
+  if (!this->SunDirections.empty())
+  {
+    this->SunDirections.clear();
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
 vtkMTimeType vtkLightVisibilityFilter::GetMTime()
 {
   vtkMTimeType time = this->Superclass::GetMTime();
@@ -261,9 +288,9 @@ int vtkLightVisibilityFilter::RequestData(
       sources.push_back(light);
     }
   }
-  if (sources.empty())
+  if (sources.empty() && !this->SunHours)
   {
-    vtkErrorMacro(<< "no lights: SetLights() with at least one light.");
+    vtkErrorMacro(<< "no lights: SetLights() with at least one light, or SunHoursOn().");
     return 0;
   }
   std::vector<vtkRayCastScene::Light> lights(sources.size());
@@ -277,6 +304,11 @@ int vtkLightVisibilityFilter::RequestData(
       vtkErrorMacro(<< "light " << l << " " << error);
       return 0;
     }
+  }
+  std::vector<SunStep> sun;
+  if (this->SunHours && !this->SunSteps(sun))
+  {
+    return 0;
   }
   const vtkIdType points = surface->GetNumberOfPoints();
   for (vtkIdType i = 0; i < points; ++i)
@@ -331,6 +363,11 @@ int vtkLightVisibilityFilter::RequestData(
   const int strata = std::max(1, static_cast<int>(std::lround(std::sqrt(this->Samples))));
   const unsigned int seed = this->Seed;
   const int count = static_cast<int>(lights.size());
+  double daylight = 0.0;
+  for (const SunStep& step : sun)
+  {
+    daylight += step.Hours;
+  }
 
   // Both attributes, each in bands of 16 so that progress is reported from
   // this thread, as VTK's observers expect; each band runs on every core.
@@ -346,6 +383,12 @@ int vtkLightVisibilityFilter::RequestData(
     vtkNew<vtkFloatArray> irradiance;
     irradiance->SetName("Irradiance");
     irradiance->SetNumberOfTuples(n);
+    vtkNew<vtkFloatArray> sunHours;
+    sunHours->SetName("SunHours");
+    sunHours->SetNumberOfTuples(sun.empty() ? 0 : n);
+    vtkNew<vtkFloatArray> sunFraction;
+    sunFraction->SetName("SunFraction");
+    sunFraction->SetNumberOfTuples(sun.empty() ? 0 : n);
     const int bands = both ? 16 : 32;
     for (int b = 0; b < bands; ++b, ++band)
     {
@@ -371,12 +414,32 @@ int vtkLightVisibilityFilter::RequestData(
               }
             }
             irradiance->SetValue(i, static_cast<float>(sum));
+            if (!sun.empty())
+            {
+              double hours = 0.0;
+              for (const SunStep& step : sun)
+              {
+                hours +=
+                  step.Hours * scene.See(step.Shape, at, normal, strata, jitter, offset).Visible;
+              }
+              sunHours->SetValue(i, static_cast<float>(hours));
+              sunFraction->SetValue(
+                i, daylight > 0.0 ? static_cast<float>(hours / daylight) : 0.0f);
+            }
           }
         });
       this->UpdateProgress(static_cast<double>(band + 1) / 32.0);
     }
-    attributes->AddArray(visibility);
-    attributes->AddArray(irradiance);
+    if (count > 0)
+    {
+      attributes->AddArray(visibility);
+      attributes->AddArray(irradiance);
+    }
+    if (!sun.empty())
+    {
+      attributes->AddArray(sunHours);
+      attributes->AddArray(sunFraction);
+    }
   };
 
   this->UpdateProgress(0.0);
@@ -400,6 +463,60 @@ int vtkLightVisibilityFilter::RequestData(
 }
 
 //------------------------------------------------------------------------------
+bool vtkLightVisibilityFilter::SunSteps(std::vector<SunStep>& steps)
+{
+  vtkRayCastScene::Light shape;
+  shape.Directional = true;
+  shape.Radius = glm::radians(this->SunRadius);
+  if (!this->SunDirections.empty())
+  {
+    for (const auto& given : this->SunDirections)
+    {
+      const glm::dvec3 toSun(given[0], given[1], given[2]);
+      if (!(glm::length(toSun) > 0.0) || !std::isfinite(glm::length(toSun)) || !(given[3] >= 0.0))
+      {
+        vtkErrorMacro(<< "sun direction (" << given[0] << ", " << given[1] << ", " << given[2]
+                      << ") with " << given[3]
+                      << " hours: a direction needs a length and the hours must not be negative.");
+        return false;
+      }
+      shape.ToLight = glm::normalize(toSun);
+      steps.push_back({ shape, given[3] });
+    }
+    return true;
+  }
+  // The world's east, north and up, north made square to up.
+  const glm::dvec3 up = glm::normalize(glm::dvec3(this->SunUp[0], this->SunUp[1], this->SunUp[2]));
+  glm::dvec3 north(this->SunNorth[0], this->SunNorth[1], this->SunNorth[2]);
+  north -= glm::dot(north, up) * up;
+  if (!(glm::length(north) > 1.0e-9 *
+          glm::length(glm::dvec3(this->SunNorth[0], this->SunNorth[1], this->SunNorth[2]))) ||
+    !std::isfinite(glm::length(north)) || !std::isfinite(glm::length(up)))
+  {
+    vtkErrorMacro(<< "SunUp (" << this->SunUp[0] << ", " << this->SunUp[1] << ", " << this->SunUp[2]
+                  << ") and SunNorth (" << this->SunNorth[0] << ", " << this->SunNorth[1] << ", "
+                  << this->SunNorth[2] << ") must be two directions that are not parallel.");
+    return false;
+  }
+  north = glm::normalize(north);
+  const glm::dvec3 east = glm::cross(north, up);
+  // Each step's direction at its middle.
+  const int count = std::max(1, static_cast<int>(std::lround(24.0 / this->SunTimeStep)));
+  const double hours = 24.0 / count;
+  for (int k = 0; k < count; ++k)
+  {
+    double enu[3];
+    vtkSolarPosition::GetDirection(this->SunLatitude, this->SunDayOfYear, (k + 0.5) * hours, enu);
+    if (enu[2] > 0.0)
+    {
+      shape.ToLight = enu[0] * east + enu[1] * north + enu[2] * up;
+      steps.push_back({ shape, hours });
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void vtkLightVisibilityFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
@@ -408,4 +525,14 @@ void vtkLightVisibilityFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Seed: " << this->Seed << "\n";
   os << indent << "PointVisibility: " << this->PointVisibility << "\n";
   os << indent << "CellVisibility: " << this->CellVisibility << "\n";
+  os << indent << "SunHours: " << this->SunHours << "\n";
+  os << indent << "SunLatitude: " << this->SunLatitude << "\n";
+  os << indent << "SunDayOfYear: " << this->SunDayOfYear << "\n";
+  os << indent << "SunTimeStep: " << this->SunTimeStep << "\n";
+  os << indent << "SunUp: " << this->SunUp[0] << ", " << this->SunUp[1] << ", " << this->SunUp[2]
+     << "\n";
+  os << indent << "SunNorth: " << this->SunNorth[0] << ", " << this->SunNorth[1] << ", "
+     << this->SunNorth[2] << "\n";
+  os << indent << "SunRadius: " << this->SunRadius << "\n";
+  os << indent << "SunDirections: " << this->SunDirections.size() << "\n";
 }

@@ -31,8 +31,24 @@
  *   terms) and a spot light's cone (its exponent inside, 0 outside), as
  *   VTK's lights shade.
  *
- * Errors (vtkErrorMacro, no output): no receiver, no lights, a receiver
- * point that is not finite. Reports progress (ProgressEvent) in 32 bands.
+ * With SunHours on, the sun over a day as well, on the same points and
+ * cells: a cone of SunRadius degrees (default 0.27) from directions a
+ * SunTimeStep apart (hours of apparent solar time) on SunDayOfYear at
+ * SunLatitude (vtkSolarPosition), in a world whose up and north are SunUp
+ * and SunNorth (defaults +z and +y, as in GIS data; east is north x up), or
+ * from the directions and weights in hours given by AddSunDirection():
+ * - "SunHours": the hours of direct sun, each step's visible fraction
+ *   times its hours, summed over the steps the sun is up;
+ * - "SunFraction": that over the day's hours of daylight (0 without any).
+ *
+ * Surfaces receive on the side their normals point to. VTK's isosurfaces
+ * of fields negative inside point theirs inwards (VTK's two-sided lighting
+ * hides it): reverse them first (vtkReverseSense, or vtkPolyDataNormals'
+ * FlipNormals or AutoOrientNormals on closed surfaces).
+ *
+ * Errors (vtkErrorMacro, no output): no receiver, neither lights nor
+ * SunHours, a receiver point that is not finite, SunUp and SunNorth
+ * parallel. Reports progress (ProgressEvent) in 32 bands.
  */
 
 #ifndef vtkLightVisibilityFilter_h
@@ -42,7 +58,11 @@
 #include "vtkSmartPointer.h"           // for vtkSmartPointer
 #include "vtkSoftShadowsTruthModule.h" // for export macro
 
+#include <array>  // for std::array
+#include <vector> // for std::vector
+
 class vtkLightCollection;
+struct vtkLightVisibilitySunStep;
 
 class VTKSOFTSHADOWSTRUTH_EXPORT vtkLightVisibilityFilter : public vtkPolyDataAlgorithm
 {
@@ -99,6 +119,38 @@ public:
   vtkBooleanMacro(CellVisibility, bool);
   ///@}
 
+  ///@{
+  /**
+   * The sun over a day (see the class description). Defaults: off,
+   * latitude 0 degrees, day 80 (about the March equinox), a step of 0.25
+   * hours, up +z, north +y, a radius of 0.27 degrees.
+   */
+  vtkSetMacro(SunHours, bool);
+  vtkGetMacro(SunHours, bool);
+  vtkBooleanMacro(SunHours, bool);
+  vtkSetClampMacro(SunLatitude, double, -90.0, 90.0);
+  vtkGetMacro(SunLatitude, double);
+  vtkSetClampMacro(SunDayOfYear, int, 1, 366);
+  vtkGetMacro(SunDayOfYear, int);
+  vtkSetClampMacro(SunTimeStep, double, 1.0 / 60.0, 24.0);
+  vtkGetMacro(SunTimeStep, double);
+  vtkSetVector3Macro(SunUp, double);
+  vtkGetVector3Macro(SunUp, double);
+  vtkSetVector3Macro(SunNorth, double);
+  vtkGetVector3Macro(SunNorth, double);
+  vtkSetClampMacro(SunRadius, double, 0.0, 10.0);
+  vtkGetMacro(SunRadius, double);
+  ///@}
+
+  ///@{
+  /**
+   * Directions towards the sun (world coordinates) and the hours each
+   * stands for, instead of a day's at SunLatitude: each counts as daylight.
+   */
+  void AddSunDirection(double x, double y, double z, double hours);
+  void RemoveAllSunDirections();
+  ///@}
+
   /**
    * Includes the lights' modification times: moving a light casts again.
    */
@@ -116,12 +168,23 @@ protected:
   unsigned int Seed = 1;
   bool PointVisibility = true;
   bool CellVisibility = false;
+  bool SunHours = false;
+  double SunLatitude = 0.0;
+  int SunDayOfYear = 80;
+  double SunTimeStep = 0.25;
+  double SunUp[3] = { 0.0, 0.0, 1.0 };
+  double SunNorth[3] = { 0.0, 1.0, 0.0 };
+  double SunRadius = 0.27;
 
 private:
   vtkLightVisibilityFilter(const vtkLightVisibilityFilter&) = delete;
+  // The sun's directions and hours for SunHours; false, with an error, for
+  // a world without a north or a direction without a length.
+  bool SunSteps(std::vector<vtkLightVisibilitySunStep>& steps);
   void operator=(const vtkLightVisibilityFilter&) = delete;
 
   vtkSmartPointer<vtkLightCollection> Lights;
+  std::vector<std::array<double, 4>> SunDirections; // x, y, z, hours
 };
 
 #endif

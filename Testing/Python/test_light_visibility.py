@@ -5,7 +5,10 @@ and the irradiance it brings on a mesh's points and cells, against closed
 forms: a ball over a ground plane under spherical lights (the share of the
 light's disc the ball's disc leaves open, as test_truth.py checks the
 truth), a wall's shadow under a small sun, a bare point's irradiance under
-VTK's attenuation and spot cone; the back of a surface; and bad input."""
+VTK's attenuation and spot cone; the back of a surface; the sun over a day
+(vtkSolarPosition against published equinoxes and solstices, 12 hours at
+the equator on the equinox, a wall's north and south sides in winter); and
+bad input."""
 import math
 
 import numpy as np
@@ -16,7 +19,7 @@ from vtkmodules.vtkFiltersSources import vtkCubeSource, vtkPlaneSource, vtkSpher
 from vtkmodules.vtkRenderingCore import vtkLight, vtkLightCollection
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
-from vtksoftshadows import vtkLightVisibilityFilter, vtkShadowLightSize
+from vtksoftshadows import vtkLightVisibilityFilter, vtkShadowLightSize, vtkSolarPosition
 
 import shadowtest as st
 
@@ -200,6 +203,88 @@ for cells in (False, True):
              "(%d dark, %d lit wrong)" % (kind, int(np.sum(seen[dark] != 0)),
                                          int(np.sum(seen[bright] != 1))))
 
+# The sun's position (vtkSolarPosition) against the U.S. Naval Observatory's
+# 2026 equinoxes and solstices (day of year, hour UT, declination): a mean
+# year's series, within half a degree where the declination moves fastest.
+for name, day, hour, declination, tolerance in [
+        ("March equinox", 79, 14 + 46 / 60, 0.0, 0.5), ("June solstice", 172, 8.4, 23.436, 0.03),
+        ("September equinox", 266, 5 / 60, 0.0, 0.5),
+        ("December solstice", 355, 20 + 50 / 60, -23.436, 0.03)]:
+    found = vtkSolarPosition.GetDeclination(day, hour)
+    print("%s 2026: declination %.3f, published %.3f" % (name, found, declination))
+    st.check(abs(found - declination) < tolerance, "%s: the sun's declination within %.2f degrees "
+             "(%.3f)" % (name, tolerance, found - declination))
+towards = [0.0, 0.0, 0.0]
+vtkSolarPosition.GetDirection(52.0, 172, 12.0, towards)
+elevation = math.degrees(math.asin(towards[2]))
+noon = 90.0 - 52.0 + vtkSolarPosition.GetDeclination(172, 12.0)
+st.check(abs(elevation - noon) < 1e-9 and abs(towards[0]) < 1e-12 and towards[1] < 0,
+         "at 52 degrees north the solstice's noon sun stands due south at 90 - 52 + declination "
+         "(%.3f)" % elevation)
+
+
+def patch(x, y, size=0.2):
+    """A small horizontal square (normal +z) centred at (x, y, 0)."""
+    square = vtkPlaneSource()
+    square.SetOrigin(x - size / 2, y - size / 2, 0.0)
+    square.SetPoint1(x + size / 2, y - size / 2, 0.0)
+    square.SetPoint2(x - size / 2, y + size / 2, 0.0)
+    return square
+
+
+def sun_run(receiver, casters=(), latitude=0.0, day=80, directions=()):
+    f = vtkLightVisibilityFilter()
+    f.SetInputConnection(receiver.GetOutputPort())
+    for caster in casters:
+        f.AddCasterConnection(caster.GetOutputPort())
+    f.SunHoursOn()
+    f.SetSunLatitude(latitude)
+    f.SetSunDayOfYear(day)
+    for direction in directions:
+        f.AddSunDirection(*direction)
+    f.SetSamples(16)
+    f.Update()
+    return f.GetOutput()
+
+
+# A bare horizontal plane at the equator on the equinox: 12 hours of sun,
+# all of the day's daylight (steps of a quarter hour).
+out = sun_run(patch(0.0, 0.0))
+hours, fraction = array(out, "SunHours"), array(out, "SunFraction")
+st.check(hours is not None and np.all(np.abs(hours - 12.0) <= 0.25) and np.all(fraction == 1.0),
+         "the equator on the equinox: 12 hours of sun on a bare plane (%s)"
+         % (None if hours is None else hours[:1],))
+st.check(out.GetPointData().GetArray("LightVisibility") is None,
+         "the sun alone: no LightVisibility")
+
+# An east-west wall 10 high at 52 degrees north on the December solstice,
+# whose sun stays south: the ground just north of it has none, the ground
+# south of it has the whole day, 2 acos(-tan(latitude) tan(declination)) / 15
+# hours long.
+wall = vtkCubeSource()
+wall.SetBounds(-5.0, 5.0, -0.1, 0.1, 0.0, 10.0)
+south, north = patch(0.0, -3.0), patch(0.0, 1.0)
+both = vtkAppendPolyData()
+both.AddInputConnection(south.GetOutputPort())
+both.AddInputConnection(north.GetOutputPort())
+out = sun_run(both, casters=[wall], latitude=52.0, day=355)
+hours, fraction = array(out, "SunHours"), array(out, "SunFraction")
+declination = math.radians(vtkSolarPosition.GetDeclination(355, 12.0))
+day = 2.0 * math.degrees(math.acos(-math.tan(math.radians(52.0)) * math.tan(declination))) / 15.0
+print("52 N, 21 December: %.2f hours of daylight; south of the wall %s, north %s"
+      % (day, hours[:4], hours[4:]))
+st.check(np.all(np.abs(hours[:4] - day) <= 0.25) and np.all(fraction[:4] == 1.0),
+         "south of the wall: the whole day's %.2f hours of sun" % day)
+st.check(np.all(hours[4:] == 0.0) and np.all(fraction[4:] == 0.0),
+         "north of the wall: no sun all day")
+
+# Given directions and their hours instead of a day's: the wall hides the
+# one from the north for the ground north of it, not the one overhead.
+out = sun_run(north, casters=[wall],
+              directions=[(0.0, -1.0, 0.2, 2.0), (0.0, 0.0, 1.0, 3.0)])
+st.check(np.allclose(array(out, "SunHours"), 3.0) and np.allclose(array(out, "SunFraction"), 0.6),
+         "given sun directions: the wall hides 2 of 5 hours (%s)" % array(out, "SunHours"))
+
 # Bad input: one clear error each, no output arrays.
 errors = []
 
@@ -226,6 +311,14 @@ nan.SetLights(lights(small))
 nan.Update()
 st.check(len(errors) >= 1 and nan.GetOutput().GetPointData().GetArray("LightVisibility") is None,
          "a NaN receiver point: an error and no arrays")
+errors.clear()
+skew = guarded(vtkLightVisibilityFilter())
+skew.SetInputConnection(floor.GetOutputPort())
+skew.SunHoursOn()
+skew.SetSunNorth(0.0, 0.0, 2.0)
+skew.Update()
+st.check(len(errors) >= 1 and skew.GetOutput().GetPointData().GetArray("SunHours") is None,
+         "north along up: an error and no arrays")
 
 # Progress reaches the end.
 progress = []
@@ -233,7 +326,8 @@ f = vtkLightVisibilityFilter()
 f.SetInputConnection(floor.GetOutputPort())
 f.SetLights(lights(small))
 f.SetSamples(4)
-f.AddObserver(vtkCommand.ProgressEvent, lambda caller, event: progress.append(caller.GetProgress()))
+f.AddObserver(vtkCommand.ProgressEvent,
+              lambda caller, event: progress.append(caller.GetProgress()))
 f.Update()
 st.check(len(progress) > 10 and progress[-1] == 1.0,
          "progress is reported in bands up to 1 (%d events)" % len(progress))
