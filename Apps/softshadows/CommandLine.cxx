@@ -5,6 +5,7 @@
 #include "SceneFile.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <regex>
 
@@ -147,6 +148,54 @@ int CommandLine::Integer(const std::string& option, int minimum, int maximum, in
     throw InputError(option, "expected an integer " + range + ", got '" + text + "'");
   }
   return std::stoi(text);
+}
+
+//------------------------------------------------------------------------------
+double CommandLine::Number(
+  const std::string& option, double minimum, double maximum, double fallback) const
+{
+  if (!this->Has(option))
+  {
+    return fallback;
+  }
+  const std::string& text = this->Value(option);
+  static const std::regex pattern("[-+]?[0-9]*\\.?[0-9]+([eE][-+]?[0-9]+)?");
+  const bool valid =
+    std::regex_match(text, pattern) && std::stod(text) >= minimum && std::stod(text) <= maximum;
+  if (!valid)
+  {
+    throw InputError(option,
+      "expected a number in [" + FormatNumber(minimum) + ", " + FormatNumber(maximum) + "], got '" +
+        text + "'");
+  }
+  return std::stod(text);
+}
+
+//------------------------------------------------------------------------------
+std::array<double, 3> CommandLine::Vector(
+  const std::string& option, const std::array<double, 3>& fallback) const
+{
+  if (!this->Has(option))
+  {
+    return fallback;
+  }
+  const std::string& text = this->Value(option);
+  static const std::regex number("[-+]?[0-9]*\\.?[0-9]+([eE][-+]?[0-9]+)?");
+  std::array<double, 3> vector{};
+  std::size_t start = 0;
+  for (int k = 0; k < 3; ++k)
+  {
+    const std::size_t comma = k < 2 ? text.find(',', start) : text.size();
+    const std::string item =
+      comma == std::string::npos ? std::string() : text.substr(start, comma - start);
+    if (!std::regex_match(item, number) || !std::isfinite(std::stod(item)))
+    {
+      throw InputError(option, "expected X,Y,Z (three numbers), got '" + text + "'");
+    }
+    vector[k] = std::stod(item);
+    start = comma + 1;
+  }
+  return vector;
 }
 
 //------------------------------------------------------------------------------

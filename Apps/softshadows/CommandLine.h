@@ -40,6 +40,11 @@ public:
   std::array<int, 2> Size() const;
   /// An integer option in [minimum, maximum], or `fallback` when not given.
   int Integer(const std::string& option, int minimum, int maximum, int fallback) const;
+  /// A number option in [minimum, maximum], or `fallback` when not given.
+  double Number(const std::string& option, double minimum, double maximum, double fallback) const;
+  /// `X,Y,Z`, three finite numbers, or `fallback` when not given.
+  std::array<double, 3> Vector(
+    const std::string& option, const std::array<double, 3>& fallback) const;
   /**
    * A comma-separated list of technique specs, each parsed, none twice.
    */

@@ -13,12 +13,16 @@
 #include "SceneFile.h"
 #include "Techniques.h"
 #include "Viewer.h"
+#include "Visibility.h"
 
 #include "vtkSoftShadowPass.h"
 
 #include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPolyData.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
+#include <vtkXMLPolyDataWriter.h>
 
 #include <algorithm>
 #include <cctype>
@@ -48,6 +52,9 @@ const char* const Usage =
                     [--samples N] [--mask FILE] [--quiet]
   softshadows quality SCENE.json --techniques SPEC,SPEC,... [--size WxH]
                       [--light I] [--samples N] [--json] [--quiet]
+  softshadows visibility SCENE.json [--output FILE.vtp] [--samples N] [--cells]
+                         [--sun-latitude DEG [--sun-day N] [--sun-step HOURS]
+                         [--sun-north X,Y,Z]] [--quiet]
 
 SCENE.json is a scene file, or a model file (.gltf, .glb, .obj) staged on a
 floor. A technique SPEC is name[:variant]; `softshadows techniques` lists them
@@ -74,6 +81,13 @@ Long work shows its progress on stderr when it is a terminal; --quiet hides it.
                --mask writes the pixels quality is measured on
   quality      each technique's shadow-only frame against the truth: RMSE and
                the share of pixels more than 0.1 off, over those pixels
+  visibility   shadows as data: every face the scene draws, in world
+               coordinates, with each light's visible fraction (N rays, default
+               64) and the irradiance on its points (and --cells), written to
+               FILE.vtp (default <scene name>-visibility.vtp; no display
+               needed); --sun-latitude adds the hours of sun on day N (default
+               80) in steps of HOURS (default 0.25), up the camera's view up,
+               north X,Y,Z (default 0,0,-1)
 )";
 
 // Frames a technique draws, untimed, before `bench` and `gallery` time it:
@@ -497,6 +511,56 @@ int Quality(const std::vector<std::string>& arguments)
   return 0;
 }
 
+int Visibility(const std::vector<std::string>& arguments)
+{
+  CommandLine line("visibility", arguments, true,
+    { "--output", "--samples", "--sun-latitude", "--sun-day", "--sun-step", "--sun-north" },
+    { "--cells", "--quiet" });
+  const int samples = line.Integer("--samples", 1, 65536, 64);
+  SunDay sun;
+  sun.On = line.Has("--sun-latitude");
+  for (const char* option : { "--sun-day", "--sun-step", "--sun-north" })
+  {
+    if (line.Has(option) && !sun.On)
+    {
+      throw InputError(option, "only used with --sun-latitude");
+    }
+  }
+  sun.Latitude = line.Number("--sun-latitude", -90.0, 90.0, 0.0);
+  sun.Day = line.Integer("--sun-day", 1, 366, 80);
+  sun.Step = line.Number("--sun-step", 1.0 / 60.0, 24.0, 0.25);
+  sun.North = line.Vector("--sun-north", sun.North);
+  Session session(line, {});
+  const Scene& scene = session.Description;
+  sun.Up = scene.Camera.ViewUp;
+  const std::array<double, 3>& u = sun.Up;
+  const std::array<double, 3>& n = sun.North;
+  const double across[3] = { u[1] * n[2] - u[2] * n[1], u[2] * n[0] - u[0] * n[2],
+    u[0] * n[1] - u[1] * n[0] };
+  if (sun.On &&
+    !(std::hypot(across[0], across[1], across[2]) >
+      1.0e-9 * std::hypot(u[0], u[1], u[2]) * std::hypot(n[0], n[1], n[2])))
+  {
+    throw InputError("--sun-north", "must not be parallel to the scene camera's view up");
+  }
+  Progress progress(line.Has("--quiet"));
+  vtkSmartPointer<vtkPolyData> surfaces =
+    CastVisibility(session.Renderer, samples, line.Has("--cells"), sun, &progress);
+  const std::filesystem::path output = line.Has("--output")
+    ? std::filesystem::path(line.Value("--output"))
+    : std::filesystem::path(FileNameOf(scene.Name) + "-visibility.vtp");
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetInputData(surfaces);
+  writer->SetFileName(output.string().c_str());
+  if (!writer->Write())
+  {
+    throw std::runtime_error("could not write " + output.string());
+  }
+  std::cout << "wrote " << output.string() << " (" << surfaces->GetNumberOfPoints() << " points, "
+            << scene.Lights.size() << " light(s)" << (sun.On ? ", the sun's hours" : "") << ")\n";
+  return 0;
+}
+
 int Run(const std::vector<std::string>& arguments)
 {
   if (arguments.empty())
@@ -539,8 +603,13 @@ int Run(const std::vector<std::string>& arguments)
   {
     return Quality(rest);
   }
+  if (command == "visibility")
+  {
+    return Visibility(rest);
+  }
   throw InputError(command,
-    "unknown command (known: techniques, render, view, bench, gallery, truth, quality, help)");
+    "unknown command (known: techniques, render, view, bench, gallery, truth, quality, "
+    "visibility, help)");
 }
 }
 

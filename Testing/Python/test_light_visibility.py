@@ -9,13 +9,17 @@ VTK's attenuation and spot cone; the back of a surface; the sun over a day
 (vtkSolarPosition against published equinoxes and solstices, 12 hours at
 the equator on the equinox, a wall's north and south sides in winter); and
 bad input."""
+import json
 import math
+import os
+import tempfile
 
 import numpy as np
 from vtkmodules.vtkCommonCore import vtkCommand
 from vtkmodules.vtkCommonDataModel import vtkPolyData
 from vtkmodules.vtkFiltersCore import vtkAppendPolyData, vtkCellCenters
 from vtkmodules.vtkFiltersSources import vtkCubeSource, vtkPlaneSource, vtkSphereSource
+from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 from vtkmodules.vtkRenderingCore import vtkLight, vtkLightCollection
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
@@ -284,6 +288,45 @@ out = sun_run(north, casters=[wall],
               directions=[(0.0, -1.0, 0.2, 2.0), (0.0, 0.0, 1.0, 3.0)])
 st.check(np.allclose(array(out, "SunHours"), 3.0) and np.allclose(array(out, "SunFraction"), 0.6),
          "given sun directions: the wall hides 2 of 5 hours (%s)" % array(out, "SunHours"))
+
+# `softshadows visibility`: the ball scene's faces in the world, written as
+# VTP, against the same closed form on the ground; with the sun at the
+# equator on the equinox, 12 hours on the ground beside the ball's path.
+scene = st.ball_scene(height=1.5, light_radius=0.4)
+scene["actors"][0]["params"]["resolution"] = 60
+with tempfile.TemporaryDirectory() as folder:
+    path = os.path.join(folder, "ball.json")
+    written = os.path.join(folder, "ball.vtp")
+    with open(path, "w") as stream:
+        json.dump(scene, stream)
+    st.run(["visibility", path, "--samples", "256", "--output", written, "--sun-latitude", "0",
+            "--quiet"])
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(written)
+    reader.Update()
+    out = reader.GetOutput()
+points = vtk_to_numpy(out.GetPoints().GetData()).astype(float)
+on_ground = np.abs(points[:, 1]) < 1e-6
+light = scene["lights"][0]
+expected = expected_under_ball(points[on_ground], scene["actors"][1]["position"],
+                               light["position"], light["radius"])
+seen = array(out, "LightVisibility").reshape(-1)[on_ground]
+error = np.abs(seen - expected)[expected < 0.98]
+rmse = float(np.sqrt(np.mean(error ** 2)))
+print("softshadows visibility: %d ground points, %d in shadow, RMSE %.4f there"
+      % (on_ground.sum(), len(error), rmse))
+st.check(len(error) > 100 and rmse < 0.015 and error.max() < 0.08,
+         "softshadows visibility follows the closed form on the ground (RMSE %.4f)" % rmse)
+hours = array(out, "SunHours")[on_ground]
+# The equinox's sun crosses the sky from east (+x) to west in the plane
+# square to north (-z): the ball's shadow sweeps along x, within |z| < 0.5.
+away = np.abs(points[on_ground][:, 2]) > 1.0
+st.check(np.all(np.abs(hours[away] - 12.0) <= 0.25),
+         "softshadows visibility --sun-latitude 0: 12 hours on the open ground (%s)"
+         % np.unique(hours[away])[:4])
+bad = st.run(["visibility", path, "--sun-day", "80"], check=False)
+st.check(bad.returncode == 2 and bad.stderr.count("\n") == 1,
+         "--sun-day without --sun-latitude: one line, exit 2 (%r)" % bad.stderr)
 
 # Bad input: one clear error each, no output arrays.
 errors = []

@@ -1,0 +1,87 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the SoftShadows authors
+// SPDX-License-Identifier: BSD-3-Clause
+#include "Visibility.h"
+
+#include "MessageCapture.h"
+
+#include <vtkAppendPolyData.h>
+#include <vtkLightVisibilityFilter.h>
+#include <vtkMatrix4x4.h>
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+#include <vtkRenderer.h>
+#include <vtkShadowCasterRegistry.h>
+#include <vtkShadowMatrices.h>
+#include <vtkTransform.h>
+#include <vtkTransformPolyDataFilter.h>
+
+#include <stdexcept>
+
+namespace softshadows
+{
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> CastVisibility(
+  vtkRenderer* renderer, int samples, bool cells, const SunDay& sun, Progress* progress)
+{
+  // Bringing the props' bounds up to date updates their inputs.
+  double bounds[6];
+  renderer->ComputeVisiblePropBounds(bounds);
+  vtkShadowCasterRegistry registry;
+  registry.Update(renderer);
+  vtkNew<vtkAppendPolyData> surfaces;
+  for (const auto* list : { &registry.GetCasters(), &registry.GetTranslucent() })
+  {
+    for (const vtkShadowCaster& caster : *list)
+    {
+      if (!caster.Faces || !caster.Data)
+      {
+        continue;
+      }
+      vtkNew<vtkMatrix4x4> matrix;
+      vtkShadowMatrices::ToVTK(caster.ModelToWorld, matrix);
+      vtkNew<vtkTransform> transform;
+      transform->SetMatrix(matrix);
+      vtkNew<vtkTransformPolyDataFilter> placed;
+      placed->SetInputData(caster.Data);
+      placed->SetTransform(transform);
+      placed->Update();
+      surfaces->AddInputData(placed->GetOutput());
+    }
+  }
+  if (surfaces->GetNumberOfInputConnections(0) == 0)
+  {
+    throw std::runtime_error("the scene draws no faces to put the light's visibility on");
+  }
+
+  vtkNew<vtkLightVisibilityFilter> visibility;
+  visibility->SetInputConnection(surfaces->GetOutputPort());
+  visibility->SetLights(renderer->GetLights());
+  visibility->SetSamples(samples);
+  visibility->SetCellVisibility(cells);
+  visibility->SetSunHours(sun.On);
+  visibility->SetSunLatitude(sun.Latitude);
+  visibility->SetSunDayOfYear(sun.Day);
+  visibility->SetSunTimeStep(sun.Step);
+  visibility->SetSunUp(sun.Up.data());
+  visibility->SetSunNorth(sun.North.data());
+  MessageCapture messages;
+  Progress::Observation observation;
+  if (progress)
+  {
+    observation = progress->Observe(
+      visibility, [progress](double fraction) { progress->Show("ray casting", fraction); });
+  }
+  visibility->Update();
+  if (progress)
+  {
+    progress->Clear();
+  }
+  if (messages.HasError())
+  {
+    throw std::runtime_error("ray casting failed: " + messages.FirstMessage());
+  }
+  auto output = vtkSmartPointer<vtkPolyData>::New();
+  output->ShallowCopy(visibility->GetOutput());
+  return output;
+}
+}
