@@ -5,6 +5,7 @@ this build's package, and each shows what it says: its shadowed image
 darkens part of the scene against the same scene drawn without the pass
 (--plain) and leaves most of it as VTK draws it; the ground-truth example's
 reference is close to the ray-cast truth and hard is not."""
+import math
 import os
 import re
 import subprocess
@@ -59,6 +60,23 @@ with tempfile.TemporaryDirectory() as folder:
                    check=True, capture_output=True)
     st.check(os.path.exists(os.path.join(folder, "shadowed_scene.png")),
              "shadowed_scene.py writes shadowed_scene.png without arguments")
+
+    # Shadows as data: the city block's day at 48 degrees north in December
+    # is as long as the sun's geometry says, the highest roofs see all of
+    # it and much of the street level little.
+    image = os.path.join(folder, "sun_hours.png")
+    printed = run("sun_hours", image, "--samples", "4")
+    numbers = [float(x) for x in re.findall(r"[0-9]+\.?[0-9]*", printed.split("\n", 1)[1])]
+    latitude, day, daylight, roof_low, roof_high, street = numbers
+    from vtksoftshadows import vtkSolarPosition
+    declination = math.radians(vtkSolarPosition.GetDeclination(day, 12.0))
+    expected = 2 * math.degrees(math.acos(-math.tan(math.radians(latitude)) *
+                                          math.tan(declination))) / 15
+    st.check(os.path.exists(image) and abs(daylight - expected) <= 0.25 and
+             roof_high == daylight and roof_low < daylight and 10 < street < 95,
+             "sun_hours: %.2f hours of daylight (%.2f by the sun's geometry), roofs %.2f to "
+             "%.2f, %.0f%% of the street level under two hours" % (
+                 daylight, expected, roof_low, roof_high, street))
 
     printed = run("ground_truth", os.path.join(folder, "ground_truth.png"))
     rmse = {m[0]: float(m[1]) for m in re.findall(r"^(\w+) +RMSE[^:]*: ([0-9.]+)", printed, re.M)}
