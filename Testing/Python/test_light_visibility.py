@@ -317,6 +317,34 @@ print("softshadows visibility: %d ground points, %d in shadow, RMSE %.4f there"
       % (on_ground.sum(), len(error), rmse))
 st.check(len(error) > 100 and rmse < 0.015 and error.max() < 0.08,
          "softshadows visibility follows the closed form on the ground (RMSE %.4f)" % rmse)
+# Against the renderer's truth (`softshadows truth`, the same scene and 256
+# rays): each ground point where the camera sees it, at its nearest pixel
+# (the camera's pinhole model, rows from the bottom as the PNG's).
+scene["size"] = [480, 360]
+truth, _, measured = st.truth(scene)
+camera = scene["camera"]
+eye = np.array(camera["position"], float)
+forward = np.array(camera["focal_point"], float) - eye
+forward /= np.linalg.norm(forward)
+right = np.cross(forward, np.array(camera["view_up"], float))
+right /= np.linalg.norm(right)
+upward = np.cross(right, forward)
+half = math.tan(math.radians(camera["view_angle"]) / 2.0)
+offsets = points[on_ground] - eye
+depth = offsets @ forward
+column = np.rint(((offsets @ right) / depth / (half * 480 / 360) + 1.0) / 2.0 * 480 - 0.5)
+row = np.rint(((offsets @ upward) / depth / half + 1.0) / 2.0 * 360 - 0.5)
+inside = (column >= 0) & (column < 480) & (row >= 0) & (row < 360)
+column, row = column[inside].astype(int), row[inside].astype(int)
+compared = measured[row, column]
+difference = (seen[inside] - truth[row, column])[compared]
+rmse = float(np.sqrt(np.mean(difference ** 2)))
+print("against softshadows truth: %d ground points compared, RMSE %.4f, largest %.3f"
+      % (len(difference), rmse, np.abs(difference).max()))
+st.check(len(difference) > 1000 and rmse < 0.01 and np.abs(difference).max() < 0.1,
+         "the visibility agrees with softshadows truth where the camera sees the ground "
+         "(RMSE %.4f)" % rmse)
+
 hours = array(out, "SunHours")[on_ground]
 # The equinox's sun crosses the sky from east (+x) to west in the plane
 # square to north (-z): the ball's shadow sweeps along x, within |z| < 0.5.
