@@ -28,6 +28,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -119,11 +120,18 @@ void CellReceivers(vtkPolyData* surface, Receiver& receiver)
     glm::dvec3 normal(0.0);
     if (type == VTK_TRIANGLE_STRIP)
     {
+      // A strip bends: its triangles' centres weighted by their areas, so
+      // that the centre lies on it where it is flat.
+      glm::dvec3 weighted(0.0);
+      double area = 0.0;
       for (vtkIdType k = 0; k + 2 < count; ++k)
       {
         const glm::dvec3 face = glm::cross(point(k + 1) - point(k), point(k + 2) - point(k));
         normal += k % 2 == 0 ? face : -face;
+        weighted += glm::length(face) * (point(k) + point(k + 1) + point(k + 2)) / 3.0;
+        area += glm::length(face);
       }
+      receiver.Positions[c] = area > 0.0 ? weighted / area : receiver.Positions[c];
     }
     else if (type == VTK_TRIANGLE || type == VTK_QUAD || type == VTK_POLYGON)
     {
@@ -261,7 +269,8 @@ vtkMTimeType vtkLightVisibilityFilter::GetMTime()
     this->Lights->InitTraversal(it);
     while (vtkLight* light = this->Lights->GetNextLight(it))
     {
-      time = std::max(time, light->GetMTime());
+      // The light's size lives in its information (vtkShadowLightSize).
+      time = std::max({ time, light->GetMTime(), light->GetInformation()->GetMTime() });
     }
   }
   return time;
@@ -315,10 +324,13 @@ int vtkLightVisibilityFilter::RequestData(
   {
     double p[3];
     surface->GetPoint(i, p);
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    // Rays are cast in floats (Embree's): a double beyond their range
+    // would be infinite there.
+    const double largest = std::numeric_limits<float>::max();
+    if (!(std::abs(p[0]) <= largest && std::abs(p[1]) <= largest && std::abs(p[2]) <= largest))
     {
-      vtkErrorMacro(<< "receiver point " << i << " is not finite (" << p[0] << ", " << p[1] << ", "
-                    << p[2] << ").");
+      vtkErrorMacro(<< "receiver point " << i << " (" << p[0] << ", " << p[1] << ", " << p[2]
+                    << ") is not finite or lies beyond float range.");
       return 0;
     }
   }
@@ -328,7 +340,7 @@ int vtkLightVisibilityFilter::RequestData(
   // points, far below any gap a scene means).
   vtkRayCastScene scene;
   const glm::dmat4 world(1.0);
-  scene.AddPolyData(surface, world, true);
+  scene.AddPolyData(surface, world, this->ReceiverCasts);
   double bounds[6];
   surface->GetBounds(bounds);
   const int casters = this->GetNumberOfInputConnections(1);
@@ -363,6 +375,7 @@ int vtkLightVisibilityFilter::RequestData(
   const int strata = std::max(1, static_cast<int>(std::lround(std::sqrt(this->Samples))));
   const unsigned int seed = this->Seed;
   const int count = static_cast<int>(lights.size());
+  const bool sunOn = this->SunHours; // arrays of zeros where the sun never rises
   double daylight = 0.0;
   for (const SunStep& step : sun)
   {
@@ -385,10 +398,10 @@ int vtkLightVisibilityFilter::RequestData(
     irradiance->SetNumberOfTuples(n);
     vtkNew<vtkFloatArray> sunHours;
     sunHours->SetName("SunHours");
-    sunHours->SetNumberOfTuples(sun.empty() ? 0 : n);
+    sunHours->SetNumberOfTuples(sunOn ? n : 0);
     vtkNew<vtkFloatArray> sunFraction;
     sunFraction->SetName("SunFraction");
-    sunFraction->SetNumberOfTuples(sun.empty() ? 0 : n);
+    sunFraction->SetNumberOfTuples(sunOn ? n : 0);
     const int bands = both ? 16 : 32;
     for (int b = 0; b < bands; ++b, ++band)
     {
@@ -414,7 +427,7 @@ int vtkLightVisibilityFilter::RequestData(
               }
             }
             irradiance->SetValue(i, static_cast<float>(sum));
-            if (!sun.empty())
+            if (sunOn)
             {
               double hours = 0.0;
               for (const SunStep& step : sun)
@@ -435,13 +448,17 @@ int vtkLightVisibilityFilter::RequestData(
       attributes->AddArray(visibility);
       attributes->AddArray(irradiance);
     }
-    if (!sun.empty())
+    if (sunOn)
     {
       attributes->AddArray(sunHours);
       attributes->AddArray(sunFraction);
     }
   };
 
+  if (!this->PointVisibility && !this->CellVisibility)
+  {
+    vtkWarningMacro(<< "PointVisibility and CellVisibility are both off: no arrays computed.");
+  }
   this->UpdateProgress(0.0);
   if (this->PointVisibility)
   {
@@ -465,6 +482,14 @@ int vtkLightVisibilityFilter::RequestData(
 //------------------------------------------------------------------------------
 bool vtkLightVisibilityFilter::SunSteps(std::vector<SunStep>& steps)
 {
+  // The clamping setters let NaN through.
+  if (!std::isfinite(this->SunRadius) || !std::isfinite(this->SunLatitude) ||
+    !std::isfinite(this->SunTimeStep))
+  {
+    vtkErrorMacro(<< "SunRadius (" << this->SunRadius << "), SunLatitude (" << this->SunLatitude
+                  << ") and SunTimeStep (" << this->SunTimeStep << ") must be finite.");
+    return false;
+  }
   vtkRayCastScene::Light shape;
   shape.Directional = true;
   shape.Radius = glm::radians(this->SunRadius);
@@ -525,6 +550,7 @@ void vtkLightVisibilityFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Seed: " << this->Seed << "\n";
   os << indent << "PointVisibility: " << this->PointVisibility << "\n";
   os << indent << "CellVisibility: " << this->CellVisibility << "\n";
+  os << indent << "ReceiverCasts: " << this->ReceiverCasts << "\n";
   os << indent << "SunHours: " << this->SunHours << "\n";
   os << indent << "SunLatitude: " << this->SunLatitude << "\n";
   os << indent << "SunDayOfYear: " << this->SunDayOfYear << "\n";

@@ -7,7 +7,7 @@
  *
  * Input 0 is the receiving surface; input 1, optional and repeatable
  * (AddCasterConnection()), the geometry that casts shadows on it. The
- * receiver casts onto itself too. Both are in world coordinates; only
+ * receiver casts onto itself too (unless ReceiverCasts is off). Both are in world coordinates; only
  * polygons and strips cast and receive. The lights (SetLights()) are taken
  * where they shine in the world (their transformed position and focal
  * point), each with the module's light size (vtkShadowLightSize): spot and
@@ -19,10 +19,12 @@
  *
  * The output is the receiver with, on its points (PointVisibility, on by
  * default) and on its cells (CellVisibility, off by default; from each
- * cell's centre and its polygon's normal):
+ * cell's centre, for a strip its triangles' weighted by area, and its
+ * polygon's normal):
  * - "LightVisibility", one component a light, in the collection's order:
  *   the visible fraction of the light, 0..1. A point reads 0 for a light
- *   behind its surface (the side its normal points away from). Point
+ *   behind its surface (the side its normal points away from), and 1 for a
+ *   light whose sphere it lies in. Point
  *   normals are the receiver's own ("Normals", or its active normals) or,
  *   without them, computed as vtkPolyDataNormals does without splitting.
  * - "Irradiance": the direct irradiance the switched-on lights bring, the
@@ -47,8 +49,10 @@
  * FlipNormals or AutoOrientNormals on closed surfaces).
  *
  * Errors (vtkErrorMacro, no output): no receiver, neither lights nor
- * SunHours, a receiver point that is not finite, SunUp and SunNorth
- * parallel. Reports progress (ProgressEvent) in 32 bands.
+ * SunHours, a receiver point that is not finite (or beyond float range:
+ * rays are cast in floats), a light or sun setting that is not finite,
+ * SunUp and SunNorth parallel. Where the sun never rises, SunHours and
+ * SunFraction are 0. Reports progress (ProgressEvent) in 32 bands.
  */
 
 #ifndef vtkLightVisibilityFilter_h
@@ -123,7 +127,8 @@ public:
   /**
    * The sun over a day (see the class description). Defaults: off,
    * latitude 0 degrees, day 80 (about the March equinox), a step of 0.25
-   * hours, up +z, north +y, a radius of 0.27 degrees.
+   * hours (a minute to an hour, rounded so that whole steps fill the day),
+   * up +z, north +y, a radius of 0.27 degrees.
    */
   vtkSetMacro(SunHours, bool);
   vtkGetMacro(SunHours, bool);
@@ -132,7 +137,7 @@ public:
   vtkGetMacro(SunLatitude, double);
   vtkSetClampMacro(SunDayOfYear, int, 1, 366);
   vtkGetMacro(SunDayOfYear, int);
-  vtkSetClampMacro(SunTimeStep, double, 1.0 / 60.0, 24.0);
+  vtkSetClampMacro(SunTimeStep, double, 1.0 / 60.0, 1.0);
   vtkGetMacro(SunTimeStep, double);
   vtkSetVector3Macro(SunUp, double);
   vtkGetVector3Macro(SunUp, double);
@@ -151,8 +156,20 @@ public:
   void RemoveAllSunDirections();
   ///@}
 
+  ///@{
   /**
-   * Includes the lights' modification times: moving a light casts again.
+   * Whether the receiver casts shadows (on itself) as well as receiving
+   * them. Default on; off for translucent surfaces, which VTK's shadows
+   * and the ground truth let receive only.
+   */
+  vtkSetMacro(ReceiverCasts, bool);
+  vtkGetMacro(ReceiverCasts, bool);
+  vtkBooleanMacro(ReceiverCasts, bool);
+  ///@}
+
+  /**
+   * Includes the lights' modification times, their sizes' included: moving
+   * or resizing a light casts again.
    */
   vtkMTimeType GetMTime() override;
 
@@ -168,6 +185,7 @@ protected:
   unsigned int Seed = 1;
   bool PointVisibility = true;
   bool CellVisibility = false;
+  bool ReceiverCasts = true;
   bool SunHours = false;
   double SunLatitude = 0.0;
   int SunDayOfYear = 80;

@@ -66,6 +66,14 @@ void Occluded1(RTCScene scene, RTCRay& ray)
 #endif
 }
 
+// Whether a point or direction survives as Embree's floats: a double
+// beyond float range becomes infinite there, and Embree aborts on rays
+// that are not finite.
+bool Finite(const glm::vec3& v)
+{
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
 // One actor's (or block's) triangles, in world coordinates.
 struct Surface
 {
@@ -153,7 +161,7 @@ void vtkRayCastScene::AddPolyData(vtkPolyData* data, const glm::dmat4& modelToWo
     mesh->GetPoint(i, p);
     const glm::dvec4 world = modelToWorld * glm::dvec4(p[0], p[1], p[2], 1.0);
     surface.Points[i] = glm::vec3(world);
-    finite[i] = std::isfinite(world.x) && std::isfinite(world.y) && std::isfinite(world.z);
+    finite[i] = Finite(surface.Points[i]); // in Embree's floats
   }
   vtkCellArray* polys = mesh->GetPolys();
   vtkIdType count;
@@ -219,6 +227,10 @@ bool vtkRayCastScene::Commit(std::string& error)
 bool vtkRayCastScene::Intersect(
   const glm::dvec3& origin, const glm::dvec3& direction, Hit& found) const
 {
+  if (!Finite(glm::vec3(origin)) || !Finite(glm::vec3(direction)))
+  {
+    return false;
+  }
   RTCRayHit hit;
   hit.ray.org_x = static_cast<float>(origin.x);
   hit.ray.org_y = static_cast<float>(origin.y);
@@ -255,6 +267,11 @@ bool vtkRayCastScene::MakeLight(vtkLight* source, Light& light, std::string& err
   light.Directional = !source->GetPositional();
   light.Position = glm::dvec3(p[0], p[1], p[2]);
   const glm::dvec3 beam = glm::dvec3(f[0], f[1], f[2]) - light.Position;
+  if (!Finite(glm::vec3(light.Position)) || !Finite(glm::vec3(beam)) || !std::isfinite(radius))
+  {
+    error = "has a position, focal point or size that is not finite.";
+    return false;
+  }
   if (light.Directional)
   {
     if (!(glm::length(beam) > 0.0))
@@ -341,6 +358,10 @@ vtkRayCastScene::Sight vtkRayCastScene::See(const Light& light, const glm::dvec3
       if (sided && glm::dot(ray, n) <= 0.0)
       {
         continue; // below the surface: it shadows itself
+      }
+      if (!Finite(glm::vec3(start)) || !Finite(glm::vec3(ray)) || std::isnan(length))
+      {
+        continue; // no ray Embree can cast: none reaches the light
       }
       RTCRay shadow;
       shadow.org_x = static_cast<float>(start.x);

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <regex>
 
@@ -151,6 +152,17 @@ int CommandLine::Integer(const std::string& option, int minimum, int maximum, in
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+// A number the option's pattern matched; infinite past a double's range
+// (std::stod would throw), which no range admits.
+double ParsedNumber(const std::string& text)
+{
+  return std::strtod(text.c_str(), nullptr);
+}
+}
+
+//------------------------------------------------------------------------------
 double CommandLine::Number(
   const std::string& option, double minimum, double maximum, double fallback) const
 {
@@ -160,15 +172,15 @@ double CommandLine::Number(
   }
   const std::string& text = this->Value(option);
   static const std::regex pattern("[-+]?[0-9]*\\.?[0-9]+([eE][-+]?[0-9]+)?");
-  const bool valid =
-    std::regex_match(text, pattern) && std::stod(text) >= minimum && std::stod(text) <= maximum;
+  const bool valid = std::regex_match(text, pattern) && ParsedNumber(text) >= minimum &&
+    ParsedNumber(text) <= maximum;
   if (!valid)
   {
     throw InputError(option,
       "expected a number in [" + FormatNumber(minimum) + ", " + FormatNumber(maximum) + "], got '" +
         text + "'");
   }
-  return std::stod(text);
+  return ParsedNumber(text);
 }
 
 //------------------------------------------------------------------------------
@@ -188,11 +200,11 @@ std::array<double, 3> CommandLine::Vector(
     const std::size_t comma = k < 2 ? text.find(',', start) : text.size();
     const std::string item =
       comma == std::string::npos ? std::string() : text.substr(start, comma - start);
-    if (!std::regex_match(item, number) || !std::isfinite(std::stod(item)))
+    if (!std::regex_match(item, number) || !std::isfinite(ParsedNumber(item)))
     {
       throw InputError(option, "expected X,Y,Z (three numbers), got '" + text + "'");
     }
-    vector[k] = std::stod(item);
+    vector[k] = ParsedNumber(item);
     start = comma + 1;
   }
   return vector;

@@ -16,9 +16,42 @@
 #include <vtkTransformPolyDataFilter.h>
 
 #include <stdexcept>
+#include <vector>
 
 namespace softshadows
 {
+//------------------------------------------------------------------------------
+namespace
+{
+// The faces of `casters`, placed in the world, appended; null if none.
+vtkSmartPointer<vtkPolyData> Placed(const std::vector<vtkShadowCaster>& casters)
+{
+  vtkNew<vtkAppendPolyData> surfaces;
+  for (const vtkShadowCaster& caster : casters)
+  {
+    if (!caster.Faces || !caster.Data)
+    {
+      continue;
+    }
+    vtkNew<vtkMatrix4x4> matrix;
+    vtkShadowMatrices::ToVTK(caster.ModelToWorld, matrix);
+    vtkNew<vtkTransform> transform;
+    transform->SetMatrix(matrix);
+    vtkNew<vtkTransformPolyDataFilter> placed;
+    placed->SetInputData(caster.Data);
+    placed->SetTransform(transform);
+    placed->Update();
+    surfaces->AddInputData(placed->GetOutput());
+  }
+  if (surfaces->GetNumberOfInputConnections(0) == 0)
+  {
+    return nullptr;
+  }
+  surfaces->Update();
+  return surfaces->GetOutput();
+}
+}
+
 //------------------------------------------------------------------------------
 vtkSmartPointer<vtkPolyData> CastVisibility(
   vtkRenderer* renderer, int samples, bool cells, const SunDay& sun, Progress* progress)
@@ -28,60 +61,59 @@ vtkSmartPointer<vtkPolyData> CastVisibility(
   renderer->ComputeVisiblePropBounds(bounds);
   vtkShadowCasterRegistry registry;
   registry.Update(renderer);
-  vtkNew<vtkAppendPolyData> surfaces;
-  for (const auto* list : { &registry.GetCasters(), &registry.GetTranslucent() })
-  {
-    for (const vtkShadowCaster& caster : *list)
-    {
-      if (!caster.Faces || !caster.Data)
-      {
-        continue;
-      }
-      vtkNew<vtkMatrix4x4> matrix;
-      vtkShadowMatrices::ToVTK(caster.ModelToWorld, matrix);
-      vtkNew<vtkTransform> transform;
-      transform->SetMatrix(matrix);
-      vtkNew<vtkTransformPolyDataFilter> placed;
-      placed->SetInputData(caster.Data);
-      placed->SetTransform(transform);
-      placed->Update();
-      surfaces->AddInputData(placed->GetOutput());
-    }
-  }
-  if (surfaces->GetNumberOfInputConnections(0) == 0)
+  // As VTK's shadows and the truth: opaque faces cast and receive,
+  // translucent ones only receive.
+  vtkSmartPointer<vtkPolyData> opaque = Placed(registry.GetCasters());
+  vtkSmartPointer<vtkPolyData> translucent = Placed(registry.GetTranslucent());
+  if (!opaque && !translucent)
   {
     throw std::runtime_error("the scene draws no faces to put the light's visibility on");
   }
 
-  vtkNew<vtkLightVisibilityFilter> visibility;
-  visibility->SetInputConnection(surfaces->GetOutputPort());
-  visibility->SetLights(renderer->GetLights());
-  visibility->SetSamples(samples);
-  visibility->SetCellVisibility(cells);
-  visibility->SetSunHours(sun.On);
-  visibility->SetSunLatitude(sun.Latitude);
-  visibility->SetSunDayOfYear(sun.Day);
-  visibility->SetSunTimeStep(sun.Step);
-  visibility->SetSunUp(sun.Up.data());
-  visibility->SetSunNorth(sun.North.data());
-  MessageCapture messages;
-  Progress::Observation observation;
-  if (progress)
+  vtkNew<vtkAppendPolyData> output;
+  for (vtkPolyData* receiver : { opaque.Get(), translucent.Get() })
   {
-    observation = progress->Observe(
-      visibility, [progress](double fraction) { progress->Show("ray casting", fraction); });
+    if (!receiver)
+    {
+      continue;
+    }
+    vtkNew<vtkLightVisibilityFilter> visibility;
+    visibility->SetInputData(receiver);
+    visibility->SetReceiverCasts(receiver == opaque);
+    if (receiver == translucent && opaque)
+    {
+      visibility->AddCasterData(opaque);
+    }
+    visibility->SetLights(renderer->GetLights());
+    visibility->SetSamples(samples);
+    visibility->SetCellVisibility(cells);
+    visibility->SetSunHours(sun.On);
+    visibility->SetSunLatitude(sun.Latitude);
+    visibility->SetSunDayOfYear(sun.Day);
+    visibility->SetSunTimeStep(sun.Step);
+    visibility->SetSunUp(sun.Up.data());
+    visibility->SetSunNorth(sun.North.data());
+    MessageCapture messages;
+    Progress::Observation observation;
+    if (progress)
+    {
+      observation = progress->Observe(
+        visibility, [progress](double fraction) { progress->Show("ray casting", fraction); });
+    }
+    visibility->Update();
+    if (progress)
+    {
+      progress->Clear();
+    }
+    if (messages.HasError())
+    {
+      throw std::runtime_error("ray casting failed: " + messages.FirstMessage());
+    }
+    output->AddInputData(visibility->GetOutput());
   }
-  visibility->Update();
-  if (progress)
-  {
-    progress->Clear();
-  }
-  if (messages.HasError())
-  {
-    throw std::runtime_error("ray casting failed: " + messages.FirstMessage());
-  }
-  auto output = vtkSmartPointer<vtkPolyData>::New();
-  output->ShallowCopy(visibility->GetOutput());
-  return output;
+  output->Update();
+  auto surfaces = vtkSmartPointer<vtkPolyData>::New();
+  surfaces->ShallowCopy(output->GetOutput());
+  return surfaces;
 }
 }

@@ -31,7 +31,8 @@ struct SunDay
   std::array<double, 3> North{ 0.0, 0.0, -1.0 };
 };
 
-/// The faces of every actor `renderer` draws (translucent ones included),
+/// The faces of every actor `renderer` draws (opaque ones, then the
+/// translucent ones, which receive but do not cast, as in VTK's shadows),
 /// placed in the world and appended, with the renderer's lights'
 /// LightVisibility and Irradiance on the points (and cells, when `cells`)
 /// and, with `sun`, SunHours and SunFraction; `samples` rays a light and a

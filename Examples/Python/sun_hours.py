@@ -9,8 +9,8 @@ GIS axes: z up, y north, x east; lengths in metres.
           [--latitude DEG] [--day N] [--samples N]
 
 writes OUTPUT.png (default sun_hours.png), prints its path, then the day's
-daylight, the roofs' sun and the share of the street level under two hours
-of it. Defaults: 48 degrees north, the December solstice (day 355), 16 rays.
+daylight, the roofs' sun and the share of the streets under two hours of
+it. Defaults: 48 degrees north, the December solstice (day 355), 16 rays.
 """
 import argparse
 
@@ -79,7 +79,12 @@ points = vtk_to_numpy(out.GetPoints().GetData())
 normals = vtk_to_numpy(out.GetPointData().GetArray("Normals"))
 up = normals[:, 2] > 0.99
 roofs = up & (points[:, 2] > 1.0)
-street = up & (points[:, 2] < 1.0e-6)
+# The streets: the ground outside the buildings' footprints.
+centres = np.array([[-27.0 + 18.0 * column, -27.0 + 18.0 * row]
+                    for row in range(4) for column in range(4)])
+offsets = np.abs(points[:, None, :2] - centres[None, :, :])
+under = np.any(np.all(offsets <= 5.0, axis=2), axis=1)
+street = up & (points[:, 2] < 1.0e-6) & ~under
 daylight = float(np.max(hours[roofs] / np.maximum(fraction[roofs], 1e-9)))
 
 lookup = vtkLookupTable()
@@ -135,4 +140,4 @@ writer.Write()
 print(args.output)
 print("latitude %.1f, day %d: %.2f hours of daylight" % (args.latitude, args.day, daylight))
 print("roofs: %.2f to %.2f hours of sun" % (hours[roofs].min(), hours[roofs].max()))
-print("street level: %.0f%% under two hours of sun" % (100.0 * np.mean(hours[street] < 2.0)))
+print("streets: %.0f%% under two hours of sun" % (100.0 * np.mean(hours[street] < 2.0)))

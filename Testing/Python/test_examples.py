@@ -63,7 +63,7 @@ with tempfile.TemporaryDirectory() as folder:
 
     # Shadows as data: the city block's day at 48 degrees north in December
     # is as long as the sun's geometry says, the highest roofs see all of
-    # it and much of the street level little.
+    # it and many of the streets little.
     image = os.path.join(folder, "sun_hours.png")
     printed = run("sun_hours", image, "--samples", "4")
     numbers = [float(x) for x in re.findall(r"[0-9]+\.?[0-9]*", printed.split("\n", 1)[1])]
@@ -75,7 +75,7 @@ with tempfile.TemporaryDirectory() as folder:
     st.check(os.path.exists(image) and abs(daylight - expected) <= 0.25 and
              roof_high == daylight and roof_low < daylight and 10 < street < 95,
              "sun_hours: %.2f hours of daylight (%.2f by the sun's geometry), roofs %.2f to "
-             "%.2f, %.0f%% of the street level under two hours" % (
+             "%.2f, %.0f%% of the streets under two hours" % (
                  daylight, expected, roof_low, roof_high, street))
 
     printed = run("ground_truth", os.path.join(folder, "ground_truth.png"))

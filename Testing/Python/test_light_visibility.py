@@ -352,8 +352,29 @@ away = np.abs(points[on_ground][:, 2]) > 1.0
 st.check(np.all(np.abs(hours[away] - 12.0) <= 0.25),
          "softshadows visibility --sun-latitude 0: 12 hours on the open ground (%s)"
          % np.unique(hours[away])[:4])
-bad = st.run(["visibility", path, "--sun-day", "80"], check=False)
-st.check(bad.returncode == 2 and bad.stderr.count("\n") == 1,
+# A translucent ball receives but casts nothing, as in the renderer.
+scene["actors"][1]["opacity"] = 0.5
+with tempfile.TemporaryDirectory() as folder:
+    path = os.path.join(folder, "ball.json")
+    written = os.path.join(folder, "ball.vtp")
+    with open(path, "w") as stream:
+        json.dump(scene, stream)
+    st.run(["visibility", path, "--samples", "4", "--output", written, "--quiet"])
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(written)
+    reader.Update()
+    glass = reader.GetOutput()
+ground = np.abs(vtk_to_numpy(glass.GetPoints().GetData())[:, 1]) < 1e-6
+st.check(glass.GetNumberOfPoints() == out.GetNumberOfPoints() and
+         np.all(array(glass, "LightVisibility").reshape(-1)[ground] == 1),
+         "softshadows visibility: a translucent ball is on the mesh but shadows nothing")
+demo = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Examples", "Scenes",
+                    "demo.json")
+bad = st.run(["visibility", demo, "--sun-day", "80"], check=False)
+far = st.run(["visibility", demo, "--sun-latitude", "1e999"], check=False)
+st.check(far.returncode == 2 and far.stderr.count("\n") == 1,
+         "--sun-latitude 1e999: one line, exit 2 (%r)" % far.stderr)
+st.check(bad.returncode == 2 and bad.stderr.count("\n") == 1 and "--sun-latitude" in bad.stderr,
          "--sun-day without --sun-latitude: one line, exit 2 (%r)" % bad.stderr)
 
 # Bad input: one clear error each, no output arrays.
@@ -390,6 +411,61 @@ skew.SetSunNorth(0.0, 0.0, 2.0)
 skew.Update()
 st.check(len(errors) >= 1 and skew.GetOutput().GetPointData().GetArray("SunHours") is None,
          "north along up: an error and no arrays")
+
+# Values past what rays can carry: each an error, never Embree's abort.
+for label, change in [
+        ("a NaN sun radius", lambda f: (f.SunHoursOn(), f.SetSunRadius(float("nan")))),
+        ("a NaN sun latitude", lambda f: (f.SunHoursOn(), f.SetSunLatitude(float("nan")))),
+        ("a light at NaN", lambda f: f.SetLights(lights(positional((float("nan"), 2, 0), 0.1)))),
+        ("a receiver point beyond float range",
+         lambda f: f.SetInputData(far))]:
+    errors.clear()
+    far = vtkPolyData()
+    far.DeepCopy(floor.GetOutput())
+    far.GetPoints().SetPoint(3, 1e39, 0.0, 0.0)
+    f = guarded(vtkLightVisibilityFilter())
+    f.SetInputConnection(floor.GetOutputPort())
+    f.SetLights(lights(small))
+    change(f)
+    f.Update()
+    st.check(len(errors) >= 1 and f.GetOutput().GetPointData().GetArray("LightVisibility") is None,
+             "%s: an error and no arrays" % label)
+
+# Where the sun never rises (80 degrees north in December) the arrays are
+# there, all zero.
+polar = sun_run(patch(0.0, 0.0), latitude=80.0, day=355)
+st.check(array(polar, "SunHours") is not None and np.all(array(polar, "SunHours") == 0)
+         and np.all(array(polar, "SunFraction") == 0), "polar night: SunHours and SunFraction 0")
+
+# A receiver that does not cast (translucent, as in VTK's shadows): the
+# ball and ground as one receiver leave the ground lit.
+together = vtkAppendPolyData()
+together.AddInputConnection(floor.GetOutputPort())
+together.AddInputConnection(sphere.GetOutputPort())
+clear = vtkLightVisibilityFilter()
+clear.SetInputConnection(together.GetOutputPort())
+clear.SetLights(lights(small))
+clear.SetSamples(4)
+clear.ReceiverCastsOff()
+clear.Update()
+ground_points = floor.GetOutput().GetNumberOfPoints()
+st.check(np.all(array(clear.GetOutput(), "LightVisibility")[:ground_points] == 1),
+         "ReceiverCasts off: the receiver shadows nothing, itself included")
+
+# Resizing a light casts again: the size lives in its information.
+resized = vtkLightVisibilityFilter()
+resized.SetInputConnection(floor.GetOutputPort())
+resized.AddCasterConnection(sphere.GetOutputPort())
+resized.SetLights(lights(small))
+resized.SetSamples(16)
+resized.Update()
+before = np.array(array(resized.GetOutput(), "LightVisibility"))
+vtkShadowLightSize.SetRadius(0.6, small)
+resized.Update()
+after = array(resized.GetOutput(), "LightVisibility")
+vtkShadowLightSize.SetRadius(0.15, small)
+st.check(np.sum((after > 0.02) & (after < 0.98)) > 2 * np.sum((before > 0.02) & (before < 0.98)),
+         "resizing a light updates the filter's output")
 
 # Progress reaches the end.
 progress = []
