@@ -26,7 +26,8 @@ from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper
 from vtkmodules.vtkRenderingOpenGL2 import vtkRenderStepsPass
 from vtksoftshadows import vtkShadowTechniqueCatalog, vtkSoftShadowPass
 from vtksoftshadows.pyvista import (SoftShadowsCompatibilityError, disable_soft_shadows,
-                                    enable_soft_shadows, get_soft_shadow_pass)
+                                    enable_soft_shadows, get_soft_shadow_pass,
+                                    light_visibility)
 
 import shadowtest as st
 
@@ -427,6 +428,34 @@ else:
     disable_soft_shadows(p)
     st.check(get_soft_shadow_pass(p) is None,
              "closing a plotter with soft shadows on, then disabling: none left")
+
+# Shadows as data on PyVista meshes (light_visibility): the ball's shadow on
+# the plane under the plotter's sized spot light, umbra under the ball and
+# lit beyond; with the sun at the equator on the equinox, 12 hours on the
+# open plane; mistakes refused with the filter's reason.
+floor = pv.Plane(i_size=6, j_size=6, i_resolution=60, j_resolution=60, direction=(0, 1, 0))
+ball = pv.Sphere(radius=0.5, center=(0, 1, 0), theta_resolution=48, phi_resolution=24)
+lamp = pv.Light(position=(0, 5, 0), focal_point=(0, 0, 0), positional=True, cone_angle=45)
+vtkSoftShadowPass.SetRadius(0.3, lamp)
+seen = light_visibility(floor, [lamp], casters=[ball], samples=16,
+                        sun={"latitude": 0.0, "day": 80, "up": (0, 1, 0), "north": (0, 0, -1)})
+values = seen.point_data["LightVisibility"]
+distance = np.linalg.norm(seen.points[:, [0, 2]], axis=1)
+st.check(isinstance(seen, pv.PolyData) and values[distance < 0.1].max() == 0.0 and
+         values[distance > 1.5].min() == 1.0,
+         "light_visibility: umbra under the ball, lit beyond (%s)" % type(seen).__name__)
+open_ground = np.abs(seen.points[:, 2]) > 1.0
+st.check(np.all(np.abs(seen.point_data["SunHours"][open_ground] - 12.0) <= 0.25),
+         "light_visibility: 12 hours of sun on the open plane at the equator")
+for bad, expected in [({"sun": {"latitude": 0.0, "north": (0, 0, 1)}}, "parallel"),
+                      ({"sun": {"lattitude": 0.0}}, "unknown sun key"), ({}, "no lights")]:
+    try:
+        light_visibility(floor, **bad)
+        refused_with = None
+    except (RuntimeError, ValueError) as error:
+        refused_with = str(error)
+    st.check(refused_with is not None and expected in refused_with,
+             "light_visibility(%s): refused (%s)" % (bad, refused_with))
 
 reference.close()
 text = take_messages()

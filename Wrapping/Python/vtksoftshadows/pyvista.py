@@ -76,16 +76,20 @@ import warnings
 import weakref
 
 import pyvista
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.util.vtkConstants import VTK_STRING
 from vtkmodules.vtkCommonCore import vtkCommand
+from vtkmodules.vtkRenderingCore import vtkLight, vtkLightCollection, vtkRenderer
 from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLFXAAPass
 
-from . import vtkShadowTechniqueCatalog, vtkSoftShadowPass
+from . import vtkLightVisibilityFilter, vtkShadowTechniqueCatalog, vtkSoftShadowPass
 
 __all__ = [
     "SoftShadowsCompatibilityError",
     "disable_soft_shadows",
     "enable_soft_shadows",
     "get_soft_shadow_pass",
+    "light_visibility",
 ]
 
 _CATALOG = vtkShadowTechniqueCatalog
@@ -861,3 +865,109 @@ def _register_components():
 
 
 _REGISTERED = _register_components()
+
+
+# --------------------------------------------------------------------------
+# Shadows as data.
+
+_SUN_KEYS = {"latitude": "SetSunLatitude", "day": "SetSunDayOfYear", "step": "SetSunTimeStep",
+             "up": "SetSunUp", "north": "SetSunNorth", "radius": "SetSunRadius"}
+
+
+def _surface(mesh, label):
+    data = pyvista.wrap(mesh)
+    if data is None:
+        raise TypeError("%s: expected a PyVista or VTK dataset, got %r" % (label, mesh))
+    return data if isinstance(data, pyvista.PolyData) else data.extract_surface()
+
+
+def _light_list(lights):
+    if hasattr(lights, "renderer") and isinstance(lights.renderer, vtkRenderer):
+        lights = lights.renderer  # a plotter: its active renderer's lights
+    if isinstance(lights, vtkRenderer):
+        return _lights(lights)
+    if isinstance(lights, vtkLight):
+        return [lights]
+    return list(lights)
+
+
+def light_visibility(mesh, lights=(), casters=(), samples=64, cells=False, sun=None):
+    """Shadows as data: how much of each light every point of ``mesh`` sees,
+    by ray casting (``vtksoftshadows.vtkLightVisibilityFilter``).
+
+    Parameters
+    ----------
+    mesh : pyvista.DataSet
+        The receiving surface, in world coordinates (its outer surface if it
+        is not a ``PolyData``); it casts on itself too. Surfaces receive on
+        the side their normals point to.
+    lights : pyvista.Plotter, pyvista.Renderer, pyvista.Light or a sequence of lights
+        A plotter's or renderer's lights, or the lights themselves, each
+        sized as the module sizes lights (``vtkSoftShadowPass.SetRadius``,
+        or ``enable_soft_shadows``' ``light_radius``): spheres for spot and
+        point lights, cones of directions for directional ones.
+    casters : sequence of pyvista.DataSet
+        More geometry that casts shadows on ``mesh``.
+    samples : int, default: 64
+        Rays a light and a point (a square number: stratified).
+    cells : bool, default: False
+        The arrays on the cells as well, from their centres.
+    sun : dict, optional
+        The sun over a day: ``latitude`` (degrees), ``day`` (of the year),
+        ``step`` (hours, 0.25), ``up`` ((0, 0, 1)), ``north`` ((0, 1, 0)),
+        ``radius`` (degrees, 0.27).
+
+    Returns
+    -------
+    pyvista.PolyData
+        The surface with ``LightVisibility`` (a component a light) and
+        ``Irradiance``, and with ``sun`` ``SunHours`` and ``SunFraction``.
+
+    Raises
+    ------
+    ValueError
+        An unknown ``sun`` key, or neither lights nor a sun.
+    RuntimeError
+        The filter refused its input (the message says why: a point that is
+        not finite, a north along up...).
+    """
+    light_items = _light_list(lights)
+    if not light_items and sun is None:
+        raise ValueError("light_visibility: no lights and no sun: give lights, sun or both")
+    f = vtkLightVisibilityFilter()
+    f.SetInputData(_surface(mesh, "mesh"))
+    for caster in casters:
+        f.AddCasterData(_surface(caster, "casters"))
+    collection = vtkLightCollection()
+    for light in light_items:
+        collection.AddItem(light)
+    f.SetLights(collection)
+    f.SetSamples(int(samples))
+    f.SetCellVisibility(bool(cells))
+    if sun is not None:
+        unknown = sorted(set(sun) - set(_SUN_KEYS))
+        if unknown:
+            raise ValueError("light_visibility: unknown sun key(s) %s (known: %s)"
+                             % (", ".join(unknown), ", ".join(sorted(_SUN_KEYS))))
+        f.SunHoursOn()
+        for key, value in sun.items():
+            setter = getattr(f, _SUN_KEYS[key])
+            setter(*value) if key in ("up", "north") else setter(value)
+    errors = []
+
+    @calldata_type(VTK_STRING)
+    def refused(caller, event, message):
+        errors.append(message)
+
+    # The executive's "returned failure" follows the filter's own reason.
+    observers = [(f, f.AddObserver(vtkCommand.ErrorEvent, refused)),
+                 (f.GetExecutive(), f.GetExecutive().AddObserver(
+                     vtkCommand.ErrorEvent, lambda caller, event: None))]
+    try:
+        f.Update()
+    finally:
+        for owner, observer in observers:
+            owner.RemoveObserver(observer)
+    if errors:
+        raise RuntimeError("light_visibility: " + errors[0].strip().splitlines()[-1])
+    return pyvista.wrap(f.GetOutput())
