@@ -376,6 +376,7 @@ int vtkLightVisibilityFilter::RequestData(
   const unsigned int seed = this->Seed;
   const int count = static_cast<int>(lights.size());
   const bool sunOn = this->SunHours; // arrays of zeros where the sun never rises
+  const bool twoSided = this->TwoSided;
   double daylight = 0.0;
   for (const SunStep& step : sun)
   {
@@ -417,7 +418,7 @@ int vtkLightVisibilityFilter::RequestData(
             for (int l = 0; l < count; ++l)
             {
               const vtkRayCastScene::Sight sight =
-                scene.See(lights[l], at, normal, strata, jitter, offset);
+                scene.See(lights[l], at, normal, strata, jitter, offset, twoSided);
               visibility->SetTypedComponent(i, l, static_cast<float>(sight.Visible));
               if (shading[l].On)
               {
@@ -432,8 +433,8 @@ int vtkLightVisibilityFilter::RequestData(
               double hours = 0.0;
               for (const SunStep& step : sun)
               {
-                hours +=
-                  step.Hours * scene.See(step.Shape, at, normal, strata, jitter, offset).Visible;
+                hours += step.Hours *
+                  scene.See(step.Shape, at, normal, strata, jitter, offset, twoSided).Visible;
               }
               sunHours->SetValue(i, static_cast<float>(hours));
               sunFraction->SetValue(
@@ -551,6 +552,7 @@ void vtkLightVisibilityFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PointVisibility: " << this->PointVisibility << "\n";
   os << indent << "CellVisibility: " << this->CellVisibility << "\n";
   os << indent << "ReceiverCasts: " << this->ReceiverCasts << "\n";
+  os << indent << "TwoSided: " << this->TwoSided << "\n";
   os << indent << "SunHours: " << this->SunHours << "\n";
   os << indent << "SunLatitude: " << this->SunLatitude << "\n";
   os << indent << "SunDayOfYear: " << this->SunDayOfYear << "\n";

@@ -46,7 +46,8 @@
  * Surfaces receive on the side their normals point to. VTK's isosurfaces
  * of fields negative inside point theirs inwards (VTK's two-sided lighting
  * hides it): reverse them first (vtkReverseSense, or vtkPolyDataNormals'
- * FlipNormals or AutoOrientNormals on closed surfaces).
+ * FlipNormals or AutoOrientNormals on closed surfaces), or turn TwoSided
+ * on.
  *
  * Errors (vtkErrorMacro, no output): no receiver, neither lights nor
  * SunHours, a receiver point that is not finite (or beyond float range:
@@ -158,6 +159,20 @@ public:
 
   ///@{
   /**
+   * Whether each point receives on whichever side of its surface faces the
+   * light's centre (as VTK's two-sided lighting shades), rather than only
+   * on the side its normal points to. Default off. On, a closed surface is
+   * right whichever way its normals point (an isosurface's point inwards)
+   * but at its terminator, where part of a light above the tangent plane
+   * goes unseen, and a sheet is lit from both sides.
+   */
+  vtkSetMacro(TwoSided, bool);
+  vtkGetMacro(TwoSided, bool);
+  vtkBooleanMacro(TwoSided, bool);
+  ///@}
+
+  ///@{
+  /**
    * Whether the receiver casts shadows (on itself) as well as receiving
    * them. Default on; off for translucent surfaces, which VTK's shadows
    * and the ground truth let receive only.
@@ -186,6 +201,7 @@ protected:
   bool PointVisibility = true;
   bool CellVisibility = false;
   bool ReceiverCasts = true;
+  bool TwoSided = false;
   bool SunHours = false;
   double SunLatitude = 0.0;
   int SunDayOfYear = 80;

@@ -294,7 +294,8 @@ bool vtkRayCastScene::MakeLight(vtkLight* source, Light& light, std::string& err
 
 //------------------------------------------------------------------------------
 vtkRayCastScene::Sight vtkRayCastScene::See(const Light& light, const glm::dvec3& at,
-  const glm::dvec3& n, int strata, const glm::dvec2& jitter, double offset) const
+  const glm::dvec3& normal, int strata, const glm::dvec2& jitter, double offset,
+  bool twoSided) const
 {
   Sight sight;
   // Towards the light's centre: the cone of directions to sample.
@@ -320,6 +321,9 @@ vtkRayCastScene::Sight vtkRayCastScene::See(const Light& light, const glm::dvec3
   {
     sight.InCone = true;
   }
+  // The side that receives: the normal's, or with two sides the one
+  // facing the light's centre.
+  const glm::dvec3 n = twoSided && glm::dot(normal, toLight) < 0.0 ? -normal : normal;
   sight.Facing = glm::dot(n, toLight);
 
   const bool point = light.Radius <= 0.0;

@@ -116,10 +116,11 @@ public:
    * open): strata x strata samples (one for a light of no size), their
    * pattern shifted by `jitter` in [0, 1)^2, each shadow ray starting
    * `offset` off the surface. A point inside a positional light sees all
-   * of it.
+   * of it. `twoSided`: the surface receives on whichever side faces the
+   * light's centre.
    */
   Sight See(const Light& light, const glm::dvec3& at, const glm::dvec3& n, int strata,
-    const glm::dvec2& jitter, double offset) const;
+    const glm::dvec2& jitter, double offset, bool twoSided = false) const;
 
   /**
    * A hash of an index (a pixel, a point) and a seed, to [0, 1)^2: the

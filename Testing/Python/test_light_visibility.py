@@ -17,7 +17,7 @@ import tempfile
 import numpy as np
 from vtkmodules.vtkCommonCore import vtkCommand
 from vtkmodules.vtkCommonDataModel import vtkPolyData
-from vtkmodules.vtkFiltersCore import vtkAppendPolyData, vtkCellCenters
+from vtkmodules.vtkFiltersCore import vtkAppendPolyData, vtkCellCenters, vtkReverseSense
 from vtkmodules.vtkFiltersSources import vtkCubeSource, vtkPlaneSource, vtkSphereSource
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 from vtkmodules.vtkRenderingCore import vtkLight, vtkLightCollection
@@ -451,6 +451,35 @@ clear.Update()
 ground_points = floor.GetOutput().GetNumberOfPoints()
 st.check(np.all(array(clear.GetOutput(), "LightVisibility")[:ground_points] == 1),
          "ReceiverCasts off: the receiver shadows nothing, itself included")
+
+# TwoSided: a ball whose normals point inwards (as VTK's isosurfaces of
+# fields negative inside) reads 0 everywhere one-sided, and with two sides
+# exactly what the outward ball reads.
+inward = vtkReverseSense()
+inward.SetInputConnection(sphere.GetOutputPort())
+inward.ReverseCellsOn()
+inward.ReverseNormalsOn()
+readings = []
+for source, two_sided in [(sphere, False), (inward, False), (inward, True)]:
+    f = vtkLightVisibilityFilter()
+    f.SetInputConnection(source.GetOutputPort())
+    f.SetLights(lights(small))
+    f.SetSamples(16)
+    f.SetTwoSided(two_sided)
+    f.Update()
+    readings.append(array(f.GetOutput(), "LightVisibility").reshape(-1))
+# (Except at the terminator, where the light's centre is below a point's
+# tangent plane but part of its sphere above: the side facing the centre
+# is the inner one there.)
+ball_points = vtk_to_numpy(sphere.GetOutput().GetPoints().GetData()).astype(float)
+outward = vtk_to_numpy(sphere.GetOutput().GetPointData().GetNormals())
+towards = np.asarray(small.GetPosition()) - ball_points
+facing = np.sum(outward * towards, axis=1) / np.linalg.norm(towards, axis=1)
+away_from_terminator = np.abs(facing) > 0.1
+st.check(readings[0].max() == 1.0 and readings[1].max() == 0.0 and
+         np.array_equal(readings[2][away_from_terminator], readings[0][away_from_terminator]),
+         "TwoSided: an inward ball reads 0 one-sided, the outward ball's values with two sides "
+         "(%d of %d points compared)" % (away_from_terminator.sum(), len(facing)))
 
 # Resizing a light casts again: the size lives in its information.
 resized = vtkLightVisibilityFilter()

@@ -444,6 +444,10 @@ distance = np.linalg.norm(seen.points[:, [0, 2]], axis=1)
 st.check(isinstance(seen, pv.PolyData) and values[distance < 0.1].max() == 0.0 and
          values[distance > 1.5].min() == 1.0,
          "light_visibility: umbra under the ball, lit beyond (%s)" % type(seen).__name__)
+flipped = light_visibility(ball.compute_normals(flip_normals=True), [lamp], samples=16,
+                           two_sided=True)
+st.check(flipped.point_data["LightVisibility"].max() == 1.0,
+         "light_visibility(two_sided=True): a ball with inward normals is lit on top")
 open_ground = np.abs(seen.points[:, 2]) > 1.0
 st.check(np.all(np.abs(seen.point_data["SunHours"][open_ground] - 12.0) <= 0.25),
          "light_visibility: 12 hours of sun on the open plane at the equator")

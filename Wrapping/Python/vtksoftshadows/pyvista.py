@@ -891,7 +891,8 @@ def _light_list(lights):
     return list(lights)
 
 
-def light_visibility(mesh, lights=(), casters=(), samples=64, cells=False, sun=None):
+def light_visibility(mesh, lights=(), casters=(), samples=64, cells=False, sun=None,
+                     two_sided=False):
     """Shadows as data: how much of each light every point of ``mesh`` sees,
     by ray casting (``vtksoftshadows.vtkLightVisibilityFilter``).
 
@@ -900,7 +901,7 @@ def light_visibility(mesh, lights=(), casters=(), samples=64, cells=False, sun=N
     mesh : pyvista.DataSet
         The receiving surface, in world coordinates (its outer surface if it
         is not a ``PolyData``); it casts on itself too. Surfaces receive on
-        the side their normals point to.
+        the side their normals point to (see ``two_sided``).
     lights : pyvista.Plotter, pyvista.Renderer, pyvista.Light or a sequence of lights
         A plotter's or renderer's lights, or the lights themselves, each
         sized as the module sizes lights (``vtkSoftShadowPass.SetRadius``,
@@ -916,6 +917,9 @@ def light_visibility(mesh, lights=(), casters=(), samples=64, cells=False, sun=N
         The sun over a day: ``latitude`` (degrees), ``day`` (of the year),
         ``step`` (hours, 0.25), ``up`` ((0, 0, 1)), ``north`` ((0, 1, 0)),
         ``radius`` (degrees, 0.27).
+    two_sided : bool, default: False
+        Each point receives on the side of its surface that faces the light,
+        whichever way its normal points (isosurfaces' point inwards).
 
     Returns
     -------
@@ -944,6 +948,7 @@ def light_visibility(mesh, lights=(), casters=(), samples=64, cells=False, sun=N
     f.SetLights(collection)
     f.SetSamples(int(samples))
     f.SetCellVisibility(bool(cells))
+    f.SetTwoSided(bool(two_sided))
     if sun is not None:
         unknown = sorted(set(sun) - set(_SUN_KEYS))
         if unknown:
