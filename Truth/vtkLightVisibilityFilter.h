@@ -7,15 +7,15 @@
  *
  * Input 0 is the receiving surface; input 1, optional and repeatable
  * (AddCasterConnection()), the geometry that casts shadows on it. The
- * receiver casts onto itself too (unless ReceiverCasts is off). Both are in world coordinates; only
- * polygons and strips cast and receive. The lights (SetLights()) are taken
- * where they shine in the world (their transformed position and focal
- * point), each with the module's light size (vtkShadowLightSize): spot and
- * point lights are spheres of that radius, directional lights cones of
- * directions of that angular radius, sampled by Samples stratified rays as
- * the ground truth samples them (vtkRayCastLightVisibility). Camera lights
- * and headlights are taken where their position says, as no camera is at
- * hand.
+ * receiver casts onto itself too (unless ReceiverCasts is off). Both are in
+ * world coordinates; only polygons and strips cast and receive. The lights
+ * (SetLights()) are taken where they shine in the world (their transformed
+ * position and focal point), each with the module's light size
+ * (vtkShadowLightSize): spot and point lights are spheres of that radius,
+ * directional lights cones of directions of that angular radius, sampled by
+ * Samples stratified rays as the ground truth samples them
+ * (vtkRayCastLightVisibility). Camera lights and headlights are taken where
+ * their position says, as no camera is at hand.
  *
  * The output is the receiver with, on its points (PointVisibility, on by
  * default) and on its cells (CellVisibility, off by default; from each
@@ -24,9 +24,9 @@
  * - "LightVisibility", one component a light, in the collection's order:
  *   the visible fraction of the light, 0..1. A point reads 0 for a light
  *   behind its surface (the side its normal points away from), and 1 for a
- *   light whose sphere it lies in. Point
- *   normals are the receiver's own ("Normals", or its active normals) or,
- *   without them, computed as vtkPolyDataNormals does without splitting.
+ *   light whose sphere it lies in. Point normals are the receiver's own
+ *   ("Normals", or its active normals) or, without them, computed as
+ *   vtkPolyDataNormals does without splitting.
  * - "Irradiance": the direct irradiance the switched-on lights bring, the
  *   sum of visibility x cos(angle to the light's centre) x intensity, times
  *   a positional light's attenuation (VTK's constant, linear and quadratic
