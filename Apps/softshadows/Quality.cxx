@@ -6,6 +6,7 @@
 
 #include "vtkRayCastLightVisibility.h"
 
+#include <vtkAlgorithm.h>
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
@@ -30,14 +31,8 @@ vtkSmartPointer<vtkImageData> Image8(vtkImageData* like, int components)
 }
 
 //------------------------------------------------------------------------------
-vtkSmartPointer<vtkImageData> CastTruth(
-  vtkRenderer* renderer, const std::array<int, 2>& size, int light, int samples, Progress* progress)
+void UpdateRayCasting(vtkAlgorithm* caster, Progress* progress)
 {
-  vtkNew<vtkRayCastLightVisibility> caster;
-  caster->SetRenderer(renderer);
-  caster->SetSize(size[0], size[1]);
-  caster->SetLightIndex(light);
-  caster->SetSamples(samples);
   MessageCapture messages;
   Progress::Observation observation;
   if (progress)
@@ -54,6 +49,18 @@ vtkSmartPointer<vtkImageData> CastTruth(
   {
     throw std::runtime_error("ray casting failed: " + messages.FirstMessage());
   }
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkImageData> CastTruth(
+  vtkRenderer* renderer, const std::array<int, 2>& size, int light, int samples, Progress* progress)
+{
+  vtkNew<vtkRayCastLightVisibility> caster;
+  caster->SetRenderer(renderer);
+  caster->SetSize(size[0], size[1]);
+  caster->SetLightIndex(light);
+  caster->SetSamples(samples);
+  UpdateRayCasting(caster, progress);
   auto truth = vtkSmartPointer<vtkImageData>::New();
   truth->ShallowCopy(caster->GetOutput());
   return truth;

@@ -15,11 +15,17 @@
 
 #include <array>
 
+class vtkAlgorithm;
 class vtkImageData;
 class vtkRenderer;
 
 namespace softshadows
 {
+/// Updates a ray-casting algorithm (the truth, the light visibility
+/// filter), its progress shown on `progress`; throws std::runtime_error
+/// with VTK's first message when it reports an error.
+void UpdateRayCasting(vtkAlgorithm* caster, Progress* progress);
+
 /// The truth for light `light` of `renderer`, at `size` pixels; the ray
 /// casting's progress shown on `progress`.
 vtkSmartPointer<vtkImageData> CastTruth(vtkRenderer* renderer, const std::array<int, 2>& size,

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "Visibility.h"
 
-#include "MessageCapture.h"
+#include "Quality.h"
 
 #include <vtkAppendPolyData.h>
 #include <vtkLightVisibilityFilter.h>
@@ -93,22 +93,7 @@ vtkSmartPointer<vtkPolyData> CastVisibility(
     visibility->SetSunTimeStep(sun.Step);
     visibility->SetSunUp(sun.Up.data());
     visibility->SetSunNorth(sun.North.data());
-    MessageCapture messages;
-    Progress::Observation observation;
-    if (progress)
-    {
-      observation = progress->Observe(
-        visibility, [progress](double fraction) { progress->Show("ray casting", fraction); });
-    }
-    visibility->Update();
-    if (progress)
-    {
-      progress->Clear();
-    }
-    if (messages.HasError())
-    {
-      throw std::runtime_error("ray casting failed: " + messages.FirstMessage());
-    }
+    UpdateRayCasting(visibility, progress);
     output->AddInputData(visibility->GetOutput());
   }
   output->Update();
