@@ -19,16 +19,13 @@
 #include "vtkPolygon.h"
 #include "vtkRayCastScene.h"
 #include "vtkSMPTools.h"
-#include "vtkShadowLightSize.h"
 #include "vtkSolarPosition.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
-#include <glm/vec4.hpp>
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <string>
 #include <vector>
 
@@ -116,7 +113,7 @@ void CellReceivers(vtkPolyData* surface, Receiver& receiver)
     {
       centre += point(k);
     }
-    receiver.Positions[c] = count > 0 ? centre / static_cast<double>(count) : centre;
+    centre = count > 0 ? centre / static_cast<double>(count) : centre;
     glm::dvec3 normal(0.0);
     if (type == VTK_TRIANGLE_STRIP)
     {
@@ -127,11 +124,12 @@ void CellReceivers(vtkPolyData* surface, Receiver& receiver)
       for (vtkIdType k = 0; k + 2 < count; ++k)
       {
         const glm::dvec3 face = glm::cross(point(k + 1) - point(k), point(k + 2) - point(k));
+        const double size = glm::length(face);
         normal += k % 2 == 0 ? face : -face;
-        weighted += glm::length(face) * (point(k) + point(k + 1) + point(k + 2)) / 3.0;
-        area += glm::length(face);
+        weighted += size * (point(k) + point(k + 1) + point(k + 2)) / 3.0;
+        area += size;
       }
-      receiver.Positions[c] = area > 0.0 ? weighted / area : receiver.Positions[c];
+      centre = area > 0.0 ? weighted / area : centre;
     }
     else if (type == VTK_TRIANGLE || type == VTK_QUAD || type == VTK_POLYGON)
     {
@@ -139,6 +137,7 @@ void CellReceivers(vtkPolyData* surface, Receiver& receiver)
       vtkPolygon::ComputeNormal(points, static_cast<int>(count), ids->GetPointer(0), n);
       normal = glm::dvec3(n[0], n[1], n[2]);
     }
+    receiver.Positions[c] = centre;
     receiver.Normals[c] = Unit(normal);
   }
 }
@@ -324,10 +323,7 @@ int vtkLightVisibilityFilter::RequestData(
   {
     double p[3];
     surface->GetPoint(i, p);
-    // Rays are cast in floats (Embree's): a double beyond their range
-    // would be infinite there.
-    const double largest = std::numeric_limits<float>::max();
-    if (!(std::abs(p[0]) <= largest && std::abs(p[1]) <= largest && std::abs(p[2]) <= largest))
+    if (!vtkRayCastScene::Castable(glm::dvec3(p[0], p[1], p[2])))
     {
       vtkErrorMacro(<< "receiver point " << i << " (" << p[0] << ", " << p[1] << ", " << p[2]
                     << ") is not finite or lies beyond float range.");

@@ -66,14 +66,6 @@ void Occluded1(RTCScene scene, RTCRay& ray)
 #endif
 }
 
-// Whether a point or direction survives as Embree's floats: a double
-// beyond float range becomes infinite there, and Embree aborts on rays
-// that are not finite.
-bool Finite(const glm::vec3& v)
-{
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
 // One actor's (or block's) triangles, in world coordinates.
 struct Surface
 {
@@ -161,7 +153,7 @@ void vtkRayCastScene::AddPolyData(vtkPolyData* data, const glm::dmat4& modelToWo
     mesh->GetPoint(i, p);
     const glm::dvec4 world = modelToWorld * glm::dvec4(p[0], p[1], p[2], 1.0);
     surface.Points[i] = glm::vec3(world);
-    finite[i] = Finite(surface.Points[i]); // in Embree's floats
+    finite[i] = Castable(world);
   }
   vtkCellArray* polys = mesh->GetPolys();
   vtkIdType count;
@@ -205,6 +197,13 @@ void vtkRayCastScene::AddRenderer(vtkRenderer* renderer, double bounds[6])
 }
 
 //------------------------------------------------------------------------------
+bool vtkRayCastScene::Castable(const glm::dvec3& v)
+{
+  const glm::vec3 single(v);
+  return std::isfinite(single.x) && std::isfinite(single.y) && std::isfinite(single.z);
+}
+
+//------------------------------------------------------------------------------
 bool vtkRayCastScene::Commit(std::string& error)
 {
   Internals& in = *this->Internal;
@@ -227,7 +226,7 @@ bool vtkRayCastScene::Commit(std::string& error)
 bool vtkRayCastScene::Intersect(
   const glm::dvec3& origin, const glm::dvec3& direction, Hit& found) const
 {
-  if (!Finite(glm::vec3(origin)) || !Finite(glm::vec3(direction)))
+  if (!Castable(origin) || !Castable(direction))
   {
     return false;
   }
@@ -267,7 +266,7 @@ bool vtkRayCastScene::MakeLight(vtkLight* source, Light& light, std::string& err
   light.Directional = !source->GetPositional();
   light.Position = glm::dvec3(p[0], p[1], p[2]);
   const glm::dvec3 beam = glm::dvec3(f[0], f[1], f[2]) - light.Position;
-  if (!Finite(glm::vec3(light.Position)) || !Finite(glm::vec3(beam)) || !std::isfinite(radius))
+  if (!Castable(light.Position) || !Castable(beam) || !std::isfinite(radius))
   {
     error = "has a position, focal point or size that is not finite.";
     return false;
@@ -363,7 +362,7 @@ vtkRayCastScene::Sight vtkRayCastScene::See(const Light& light, const glm::dvec3
       {
         continue; // below the surface: it shadows itself
       }
-      if (!Finite(glm::vec3(start)) || !Finite(glm::vec3(ray)) || std::isnan(length))
+      if (!Castable(start) || !Castable(ray) || std::isnan(length))
       {
         continue; // no ray Embree can cast: none reaches the light
       }

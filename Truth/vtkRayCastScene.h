@@ -57,6 +57,13 @@ public:
   void AddRenderer(vtkRenderer* renderer, double bounds[6]);
 
   /**
+   * Whether a point or direction survives as Embree's floats: a double
+   * beyond float range is infinite there, and Embree aborts on a ray that
+   * is not finite.
+   */
+  static bool Castable(const glm::dvec3& v);
+
+  /**
    * Builds Embree's scenes of what was added. False, with why in `error`,
    * where Embree cannot.
    */
