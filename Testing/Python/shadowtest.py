@@ -114,21 +114,41 @@ def shadow_only(scene, technique=None, light=0):
     return pixels[:, :, 0] / 255.0, pixels[:, :, 1] == 255
 
 
-def camera_rays(camera, size):
-    """Unit ray directions through every pixel centre, [rows, columns, 3],
-    for a perspective vtkCamera with a vertical view angle."""
-    w, h = size
+def camera_basis(camera):
+    """A perspective vtkCamera with a vertical view angle as (eye, unit
+    forward, right and up, tan of half the view angle)."""
     eye = np.array(camera["position"], float)
     forward = np.array(camera["focal_point"], float) - eye
     forward /= np.linalg.norm(forward)
     right = np.cross(forward, np.array(camera["view_up"], float))
     right /= np.linalg.norm(right)
     up = np.cross(right, forward)
-    half = math.tan(math.radians(camera["view_angle"]) / 2.0)
+    return eye, forward, right, up, math.tan(math.radians(camera["view_angle"]) / 2.0)
+
+
+def camera_rays(camera, size):
+    """Unit ray directions through every pixel centre, [rows, columns, 3],
+    for a perspective vtkCamera with a vertical view angle."""
+    w, h = size
+    _, forward, right, up, half = camera_basis(camera)
     x = ((np.arange(w) + 0.5) / w * 2.0 - 1.0) * half * w / h
     y = ((np.arange(h) + 0.5) / h * 2.0 - 1.0) * half
     rays = forward + x[None, :, None] * right + y[:, None, None] * up
     return rays / np.linalg.norm(rays, axis=2, keepdims=True)
+
+
+def camera_pixels(camera, size, points):
+    """The (row, column) of the pixel nearest each point's image, rows from
+    the bottom (as camera_rays and read_png), and whether it is inside the
+    picture; the inverse of camera_rays."""
+    w, h = size
+    eye, forward, right, up, half = camera_basis(camera)
+    offsets = np.asarray(points, float) - eye
+    depth = offsets @ forward
+    column = np.rint(((offsets @ right) / depth / (half * w / h) + 1.0) / 2.0 * w - 0.5)
+    row = np.rint(((offsets @ up) / depth / half + 1.0) / 2.0 * h - 0.5)
+    inside = (depth > 0) & (column >= 0) & (column < w) & (row >= 0) & (row < h)
+    return row.astype(int), column.astype(int), inside
 
 
 def sphere_hit(origin, rays, center, radius):

@@ -318,24 +318,11 @@ print("softshadows visibility: %d ground points, %d in shadow, RMSE %.4f there"
 st.check(len(error) > 100 and rmse < 0.015 and error.max() < 0.08,
          "softshadows visibility follows the closed form on the ground (RMSE %.4f)" % rmse)
 # Against the renderer's truth (`softshadows truth`, the same scene and 256
-# rays): each ground point where the camera sees it, at its nearest pixel
-# (the camera's pinhole model, rows from the bottom as the PNG's).
+# rays): each ground point where the camera sees it, at its nearest pixel.
 scene["size"] = [480, 360]
 truth, _, measured = st.truth(scene)
-camera = scene["camera"]
-eye = np.array(camera["position"], float)
-forward = np.array(camera["focal_point"], float) - eye
-forward /= np.linalg.norm(forward)
-right = np.cross(forward, np.array(camera["view_up"], float))
-right /= np.linalg.norm(right)
-upward = np.cross(right, forward)
-half = math.tan(math.radians(camera["view_angle"]) / 2.0)
-offsets = points[on_ground] - eye
-depth = offsets @ forward
-column = np.rint(((offsets @ right) / depth / (half * 480 / 360) + 1.0) / 2.0 * 480 - 0.5)
-row = np.rint(((offsets @ upward) / depth / half + 1.0) / 2.0 * 360 - 0.5)
-inside = (column >= 0) & (column < 480) & (row >= 0) & (row < 360)
-column, row = column[inside].astype(int), row[inside].astype(int)
+row, column, inside = st.camera_pixels(scene["camera"], scene["size"], points[on_ground])
+row, column = row[inside], column[inside]
 compared = measured[row, column]
 difference = (seen[inside] - truth[row, column])[compared]
 rmse = float(np.sqrt(np.mean(difference ** 2)))
