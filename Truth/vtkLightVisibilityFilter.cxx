@@ -2,7 +2,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLightVisibilityFilter.h"
 
+#include "vtkAppendPolyData.h"
 #include "vtkCellData.h"
+#include "vtkCommunicator.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
@@ -10,6 +12,7 @@
 #include "vtkInformationVector.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
+#include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -26,6 +29,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -46,6 +52,27 @@ glm::dvec3 Unit(const glm::dvec3& n)
 {
   const double length = glm::length(n);
   return length > 0.0 && std::isfinite(length) ? n / length : glm::dvec3(0.0);
+}
+
+// A point's key for its rays' jitter: its position as floats, hashed, so
+// that it draws the same rays whichever process's piece holds it.
+unsigned int PositionKey(const glm::dvec3& p)
+{
+  const float f[3] = { static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z) };
+  uint32_t u[3];
+  std::memcpy(u, f, sizeof(u));
+  return u[0] * 73856093U ^ u[1] * 19349663U ^ u[2] * 83492791U;
+}
+
+// Only what casts, to send to the other processes: points, polygons and
+// strips.
+void AddShape(vtkAppendPolyData* shapes, vtkPolyData* data)
+{
+  vtkNew<vtkPolyData> shape;
+  shape->SetPoints(data->GetPoints());
+  shape->SetPolys(data->GetPolys());
+  shape->SetStrips(data->GetStrips());
+  shapes->AddInputData(shape);
 }
 
 // The points and their normals: the receiver's own, else computed without
@@ -194,6 +221,7 @@ using SunStep = vtkLightVisibilitySunStep;
 vtkLightVisibilityFilter::vtkLightVisibilityFilter()
 {
   this->SetNumberOfInputPorts(2);
+  this->SetController(vtkMultiProcessController::GetGlobalController());
 }
 
 vtkLightVisibilityFilter::~vtkLightVisibilityFilter() = default;
@@ -239,6 +267,21 @@ void vtkLightVisibilityFilter::SetLights(vtkLightCollection* lights)
 vtkLightCollection* vtkLightVisibilityFilter::GetLights() const
 {
   return this->Lights;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightVisibilityFilter::SetController(vtkMultiProcessController* controller)
+{
+  if (this->Controller != controller)
+  {
+    this->Controller = controller;
+    this->Modified();
+  }
+}
+
+vtkMultiProcessController* vtkLightVisibilityFilter::GetController() const
+{
+  return this->Controller;
 }
 
 //------------------------------------------------------------------------------
@@ -319,7 +362,8 @@ int vtkLightVisibilityFilter::RequestData(
     return 0;
   }
   const vtkIdType points = surface->GetNumberOfPoints();
-  for (vtkIdType i = 0; i < points; ++i)
+  bool valid = true;
+  for (vtkIdType i = 0; i < points && valid; ++i)
   {
     double p[3];
     surface->GetPoint(i, p);
@@ -327,8 +371,27 @@ int vtkLightVisibilityFilter::RequestData(
     {
       vtkErrorMacro(<< "receiver point " << i << " (" << p[0] << ", " << p[1] << ", " << p[2]
                     << ") is not finite or lies beyond float range.");
-      return 0;
+      valid = false;
     }
+  }
+  // Split among processes, all stop when one refuses its piece (rather
+  // than wait for it in the exchange below).
+  vtkMultiProcessController* controller = this->Controller;
+  const bool shared = controller && controller->GetNumberOfProcesses() > 1;
+  if (shared)
+  {
+    const int mine = valid ? 1 : 0;
+    int all = 0;
+    controller->AllReduce(&mine, &all, 1, vtkCommunicator::MIN_OP);
+    if (valid && !all)
+    {
+      vtkErrorMacro(<< "another process's receiver was refused.");
+    }
+    valid = all != 0;
+  }
+  if (!valid)
+  {
+    return 0;
   }
 
   // The receiver and every caster, opaque; the extent of all of them sets
@@ -336,9 +399,25 @@ int vtkLightVisibilityFilter::RequestData(
   // points, far below any gap a scene means).
   vtkRayCastScene scene;
   const glm::dmat4 world(1.0);
+  glm::dvec3 low(std::numeric_limits<double>::infinity());
+  glm::dvec3 high = -low;
+  auto extend = [&](vtkPolyData* data)
+  {
+    if (data->GetNumberOfPoints() > 0)
+    {
+      double b[6];
+      data->GetBounds(b);
+      low = glm::min(low, glm::dvec3(b[0], b[2], b[4]));
+      high = glm::max(high, glm::dvec3(b[1], b[3], b[5]));
+    }
+  };
+  vtkNew<vtkAppendPolyData> shapes;
   scene.AddPolyData(surface, world, this->ReceiverCasts);
-  double bounds[6];
-  surface->GetBounds(bounds);
+  extend(surface);
+  if (this->ReceiverCasts)
+  {
+    AddShape(shapes, surface);
+  }
   const int casters = this->GetNumberOfInputConnections(1);
   for (int c = 0; c < casters; ++c)
   {
@@ -348,17 +427,34 @@ int vtkLightVisibilityFilter::RequestData(
       continue;
     }
     scene.AddPolyData(caster, world, true);
-    double more[6];
-    caster->GetBounds(more);
-    for (int k = 0; k < 3; ++k)
-    {
-      bounds[2 * k] = std::min(bounds[2 * k], more[2 * k]);
-      bounds[2 * k + 1] = std::max(bounds[2 * k + 1], more[2 * k + 1]);
-    }
+    extend(caster);
+    AddShape(shapes, caster);
   }
-  double extent =
-    glm::length(glm::dvec3(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]));
-  extent = bounds[0] <= bounds[1] && std::isfinite(extent) && extent > 0.0 ? extent : 1.0;
+  if (shared)
+  {
+    // Every other process's receiver (when it casts) and casters cast here.
+    if (shapes->GetNumberOfInputConnections(0) == 0)
+    {
+      shapes->AddInputData(vtkNew<vtkPolyData>());
+    }
+    shapes->Update();
+    std::vector<vtkSmartPointer<vtkDataObject>> gathered;
+    controller->AllGather(shapes->GetOutput(), gathered);
+    const int me = controller->GetLocalProcessId();
+    for (size_t p = 0; p < gathered.size(); ++p)
+    {
+      if (static_cast<int>(p) != me)
+      {
+        scene.AddPolyData(vtkPolyData::SafeDownCast(gathered[p]), world, true);
+      }
+    }
+    const glm::dvec3 ownLow = low;
+    const glm::dvec3 ownHigh = high;
+    controller->AllReduce(&ownLow.x, &low.x, 3, vtkCommunicator::MIN_OP);
+    controller->AllReduce(&ownHigh.x, &high.x, 3, vtkCommunicator::MAX_OP);
+  }
+  double extent = glm::length(high - low);
+  extent = std::isfinite(extent) && extent > 0.0 ? extent : 1.0;
   const double offset = 1.0e-5 * extent;
   std::string error;
   if (!scene.Commit(error))
@@ -409,7 +505,7 @@ int vtkLightVisibilityFilter::RequestData(
           {
             const glm::dvec3& at = receiver.Positions[i];
             const glm::dvec3& normal = receiver.Normals[i];
-            const glm::dvec2 jitter = vtkRayCastScene::Jitter(static_cast<unsigned int>(i), seed);
+            const glm::dvec2 jitter = vtkRayCastScene::Jitter(PositionKey(at), seed);
             double sum = 0.0;
             for (int l = 0; l < count; ++l)
             {
@@ -543,6 +639,7 @@ void vtkLightVisibilityFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Lights: " << this->Lights.Get() << "\n";
+  os << indent << "Controller: " << this->Controller.Get() << "\n";
   os << indent << "Samples: " << this->Samples << "\n";
   os << indent << "Seed: " << this->Seed << "\n";
   os << indent << "PointVisibility: " << this->PointVisibility << "\n";

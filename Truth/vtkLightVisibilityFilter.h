@@ -49,6 +49,12 @@
  * FlipNormals or AutoOrientNormals on closed surfaces), or turn TwoSided
  * on.
  *
+ * Split among processes (ParaView's pvbatch and pvserver ranks, each
+ * holding its own pieces of the receiver and the casters; SetController()),
+ * every process's opaque surfaces are gathered so that each casts on every
+ * other's receiver, and a point's rays are drawn from its position, not its
+ * id: each point reads what it would with all the data on one process.
+ *
  * Errors (vtkErrorMacro, no output): no receiver, neither lights nor
  * SunHours, a receiver point that is not finite (or beyond float range:
  * rays are cast in floats), a light or sun setting that is not finite,
@@ -67,6 +73,7 @@
 #include <vector> // for std::vector
 
 class vtkLightCollection;
+class vtkMultiProcessController;
 struct vtkLightVisibilitySunStep;
 
 class VTKSOFTSHADOWSTRUTH_EXPORT vtkLightVisibilityFilter : public vtkPolyDataAlgorithm
@@ -182,6 +189,18 @@ public:
   vtkBooleanMacro(ReceiverCasts, bool);
   ///@}
 
+  ///@{
+  /**
+   * The processes among which the receiver and casters are split, each
+   * with its own pieces: every process's opaque surfaces cast on every
+   * other's receiver. Default: the global controller. With one process (or
+   * none) nothing is exchanged; with several, every process must run the
+   * filter together.
+   */
+  void SetController(vtkMultiProcessController* controller);
+  vtkMultiProcessController* GetController() const;
+  ///@}
+
   /**
    * Includes the lights' modification times, their sizes' included: moving
    * or resizing a light casts again.
@@ -218,6 +237,7 @@ private:
   void operator=(const vtkLightVisibilityFilter&) = delete;
 
   vtkSmartPointer<vtkLightCollection> Lights;
+  vtkSmartPointer<vtkMultiProcessController> Controller;
   std::vector<std::array<double, 4>> SunDirections; // x, y, z, hours
 };
 

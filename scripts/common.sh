@@ -17,9 +17,10 @@ SOFTSHADOWS_PACKAGES=(
 )
 
 # What the tests use besides: numpy for their numeric checks, Debian's
-# models for the importers, xdotool to drive the viewer's window, and
-# PyVista, which Debian has from 13 on.
-SOFTSHADOWS_TEST_PACKAGES=(python3-numpy assimp-testmodels xdotool)
+# models for the importers, xdotool to drive the viewer's window, MPI for
+# the visibility filter split among processes, and PyVista, which Debian
+# has from 13 on.
+SOFTSHADOWS_TEST_PACKAGES=(python3-numpy assimp-testmodels xdotool openmpi-bin python3-mpi4py)
 if [ "$(. /etc/os-release && echo "${VERSION_CODENAME:-}")" != bookworm ]; then
   SOFTSHADOWS_TEST_PACKAGES+=(python3-pyvista)
 fi
