@@ -13,8 +13,9 @@
 # (build/, whose softshadows program the plugin's test asks for the
 # techniques), builds the plugin (ParaView/) in
 # build-paraview/plugin, writes pvpython and pvbatch wrappers that find it
-# all, runs the plugin's test in pvpython and its parallel tests in pvbatch
-# on one and two MPI ranks and through a pvserver on two ranks, and ends
+# all, runs the plugin's test in pvpython and its parallel tests (the view's
+# and the Light Visibility filter's) in pvbatch on one and two MPI ranks and
+# through a pvserver on two ranks, and ends
 # with three lines: PLUGIN=, PVPYTHON= and PVBATCH=. Exits non-zero on any
 # failure. docs/paraview.md. With --prepare it only installs and unpacks
 # (CI does that in the background while it tests something else).
@@ -131,6 +132,12 @@ xvfb "$build/pvbatch" --force-offscreen-rendering "$root/Testing/ParaView/test_p
   "$plugin" "$parallel"
 xvfb mpirun --allow-run-as-root --oversubscribe -np 2 "$build/pvbatch" --force-offscreen-rendering \
   "$root/Testing/ParaView/test_parallel.py" "$plugin" "$parallel"
+# The Light Visibility filter: one rank's values checked, then two ranks'
+# against them.
+xvfb "$build/pvbatch" --force-offscreen-rendering "$root/Testing/ParaView/test_light_visibility.py" \
+  "$plugin" "$parallel"
+xvfb mpirun --allow-run-as-root --oversubscribe -np 2 "$build/pvbatch" --force-offscreen-rendering \
+  "$root/Testing/ParaView/test_light_visibility.py" "$plugin" "$parallel"
 # Through a pvserver on two ranks, on a free port; the server exits when
 # the client leaves (timeout: in case the client never came).
 port=$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("localhost", 0)); print(s.getsockname()[1])')

@@ -133,3 +133,57 @@ def process_ids_range(source):
         ids, array = pvsimple.ProcessIdScalars(Input=source), "ProcessId"
     ids.UpdatePipeline()
     return ids.PointData[array].GetRange()
+
+
+# The Light Visibility filter's scene (test_light_visibility.py): a ball
+# over the ground under a spherical light.
+VISIBILITY_BALL = [0.4, 1.2, 0.0]
+VISIBILITY_LIGHT = [1.0, 3.0, 0.5]
+VISIBILITY_FOCAL_POINT = [1.0, 0.0, 0.5]
+
+
+def visibility_scene():
+    """The ground, its normal +y (Point1 - Origin x Point2 - Origin), and
+    the ball (which ParaView's sphere source splits into one band of
+    latitudes a rank)."""
+    ground = Plane(Origin=[-3, 0, -3], Point1=[-3, 0, 3], Point2=[3, 0, -3], XResolution=60,
+                   YResolution=60)
+    ball = Sphere(Center=VISIBILITY_BALL, Radius=BALL_RADIUS, ThetaResolution=128,
+                  PhiResolution=64)
+    return ground, ball
+
+
+def visibility_light(view, radius=0.3):
+    """A ParaView light in `view` where the parameters put the light."""
+    light = AddLight(view=view)
+    light.Coords = "Scene"
+    light.Type = "Positional"
+    light.Position = VISIBILITY_LIGHT
+    light.FocalPoint = VISIBILITY_FOCAL_POINT
+    light.ConeAngle = 90
+    light.Radius = radius
+    return light
+
+
+def visibility_values(filter, array="LightVisibility"):
+    """The filter's points (all ranks' pieces) and `array` on them."""
+    from paraview import servermanager
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    data = servermanager.Fetch(filter)
+    points = vtk_to_numpy(data.GetPoints().GetData()).astype(float)
+    found = data.GetPointData().GetArray(array)
+    return points, None if found is None else vtk_to_numpy(found).astype(float).reshape(-1)
+
+
+def check_visibility_as_saved(points, visibility, saved, what):
+    """`visibility` at `points` as the values saved in `saved` (.npz) at the
+    same points, in whatever order."""
+    one = np.load(saved)
+    alone = {tuple(p): v for p, v in zip(one["points"].astype(np.float32).tolist(),
+                                         one["visibility"])}
+    found = [alone.get(tuple(p)) for p in points.astype(np.float32).tolist()]
+    missing = sum(v is None for v in found)
+    difference = np.abs(visibility - np.array([1e9 if v is None else v for v in found]))
+    check(missing == 0 and difference.max() < 1e-6,
+          "%s: %d points, %d not in the one-rank result, largest difference %.2g"
+          % (what, len(points), missing, difference.max()))

@@ -4,10 +4,13 @@
 starts the server): the client-server path of the light Radius (the view's
 proxy on the client hands it to the view on each server rank) and the shadow
 maps combined across the server's ranks. The scene is test_parallel.py's;
-its one-rank images in FOLDER are the reference.
+its one-rank images in FOLDER are the reference. Then the Light Visibility
+filter on the server's ranks, against test_light_visibility.py's one-rank
+values in FOLDER.
 
     PVPYTHON test_client_server.py PLUGIN FOLDER PORT
 """
+import os
 import sys
 import time
 
@@ -51,5 +54,23 @@ hard_edged, _ = pvshadows.screenshot(view, folder, "contact-server-radius0")
 changed = int((np.abs(hard_edged - shaded) > 16).sum())
 check(changed > 500, "contact: Radius 0 on the client changes %d pixels by more than 16 levels "
       "on the server's image" % changed)
+
+# The Light Visibility filter on the server's ranks (test_light_visibility.py's
+# scene and one-rank values), its light as parameters and as a light of the
+# view, whose Radius the client hands over.
+ground, visibility_ball = pvshadows.visibility_scene()
+saved = os.path.join(folder, "light-visibility-1ranks.npz")
+given = LightVisibility(Input=ground, Casters=[visibility_ball], LightType="Point",  # noqa: F821
+                        LightPosition=pvshadows.VISIBILITY_LIGHT,
+                        LightFocalPoint=pvshadows.VISIBILITY_FOCAL_POINT, LightRadius=0.3,
+                        Samples=256)
+points, values = pvshadows.visibility_values(given)
+pvshadows.check_visibility_as_saved(points, values, saved,
+                                    "Light Visibility on two server ranks as on one pvbatch rank")
+taken = LightVisibility(Input=ground, Casters=[visibility_ball], LightsFrom="Lights",  # noqa: F821
+                        Lights=[pvshadows.visibility_light(view)], Samples=256)
+points, values = pvshadows.visibility_values(taken)
+pvshadows.check_visibility_as_saved(points, values, saved,
+                                    "Light Visibility with the view's light on the server")
 
 pvshadows.finish()

@@ -421,6 +421,22 @@ def disc_overlap(r1, r2, d):
     return np.where(lens, lens_area, area)
 
 
+def ball_light_visibility(points, center, light_position, light_radius, ball_radius=BALL_RADIUS):
+    """Closed form of what each of `points` sees of a spherical light past a
+    ball: 1 - the share of the light's disc the ball's disc covers (angular
+    radii)."""
+    to_ball = np.asarray(center, float) - points
+    ball_distance = np.linalg.norm(to_ball, axis=-1)
+    beta = np.arcsin(ball_radius / ball_distance)
+    to_light = np.asarray(light_position, float) - points
+    distance = np.linalg.norm(to_light, axis=-1)
+    alpha = np.arcsin(light_radius / distance)
+    cosine = np.sum(to_light * to_ball, axis=-1) / (distance * ball_distance)
+    gamma = np.arccos(np.clip(cosine, -1.0, 1.0))
+    covered = disc_overlap(alpha, beta, gamma) / (math.pi * alpha * alpha)
+    return 1.0 - np.clip(covered, 0.0, 1.0)
+
+
 def ball_visibility(scene):
     """Closed form of the ball scene's ground visibility: the share of the
     light's disc, as seen from each ground point, that the ball's disc does

@@ -88,21 +88,6 @@ def array(data, name, cells=False):
     return None if values is None else vtk_to_numpy(values)
 
 
-def expected_under_ball(points, center, light_position, light_radius):
-    """1 - the share of the light's disc the ball's disc covers, seen from
-    each point (angular radii, as shadowtest.ball_visibility)."""
-    to_ball = np.asarray(center, float) - points
-    ball_distance = np.linalg.norm(to_ball, axis=-1)
-    beta = np.arcsin(st.BALL_RADIUS / ball_distance)
-    to_light = np.asarray(light_position, float) - points
-    distance = np.linalg.norm(to_light, axis=-1)
-    alpha = np.arcsin(light_radius / distance)
-    cosine = np.sum(to_light * to_ball, axis=-1) / (distance * ball_distance)
-    gamma = np.arccos(np.clip(cosine, -1.0, 1.0))
-    covered = st.disc_overlap(alpha, beta, gamma) / (math.pi * alpha * alpha)
-    return 1.0 - np.clip(covered, 0.0, 1.0)
-
-
 # A ball over the ground under a point light of two sizes, and the two as
 # one collection: one component a light.
 center = (0.3, 1.5, -0.2)
@@ -117,7 +102,7 @@ st.check(visibility is not None and visibility.shape == (out.GetNumberOfPoints()
          % (None if visibility is None else visibility.shape,))
 widest = []
 for k, (light, radius) in enumerate([(small, 0.15), (large, 0.6)]):
-    expected = expected_under_ball(points, center, light.GetPosition(), radius)
+    expected = st.ball_light_visibility(points, center, light.GetPosition(), radius)
     penumbra = (expected > 0.02) & (expected < 0.98)
     widest.append(penumbra.sum())
     # Over the points in shadow, where a wrong sampling would show: 256
@@ -308,7 +293,7 @@ with tempfile.TemporaryDirectory() as folder:
 points = vtk_to_numpy(out.GetPoints().GetData()).astype(float)
 on_ground = np.abs(points[:, 1]) < 1e-6
 light = scene["lights"][0]
-expected = expected_under_ball(points[on_ground], scene["actors"][1]["position"],
+expected = st.ball_light_visibility(points[on_ground], scene["actors"][1]["position"],
                                light["position"], light["radius"])
 seen = array(out, "LightVisibility").reshape(-1)[on_ground]
 error = np.abs(seen - expected)[expected < 0.98]
