@@ -85,6 +85,29 @@ def lights_from_view():
           % (penumbra(wider), penumbra(from_view)))
 
 
+def light_types():
+    """A spot light lights only its cone; a directional light of the sun's
+    size from straight up puts the ball's shadow under the ball."""
+    spot = LightVisibility(Input=ground, Casters=[ball], LightType="Spot",  # noqa: F821
+                           LightPosition=LIGHT, LightFocalPoint=FOCAL_POINT, LightConeAngle=20,
+                           Samples=16)
+    points, irradiance = values(spot, "Irradiance")
+    axis = np.array(FOCAL_POINT) - np.array(LIGHT)
+    to_point = points - np.array(LIGHT)
+    angle = np.degrees(np.arccos(to_point @ axis / np.linalg.norm(to_point, axis=1)
+                                 / np.linalg.norm(axis)))
+    check(np.all(irradiance[angle > 20.5] == 0) and (irradiance[angle < 19.5] > 0).mean() > 0.8,
+          "a spot light of 20 degrees: no irradiance outside its cone, some on %.0f%% of the "
+          "points inside" % (100 * (irradiance[angle < 19.5] > 0).mean()))
+    sun = LightVisibility(Input=ground, Casters=[ball], LightType="Directional",  # noqa: F821
+                          LightPosition=[0, 1, 0], LightFocalPoint=[0, 0, 0], LightRadius=0.27,
+                          Samples=16)
+    points, visibility = values(sun)
+    under = np.hypot(points[:, 0] - CENTER[0], points[:, 2] - CENTER[2])
+    check(np.all(visibility[under < 0.45] == 0) and np.all(visibility[under > 0.55] == 1),
+          "a directional light from straight up: dark under the ball, lit beyond it")
+
+
 def sun_hours():
     """The sun at the equator on the equinox over a bare ground whose up is +y."""
     sun = LightVisibility(Input=ground, LightsFrom="None (sun only)", SunHours=1,  # noqa: F821
@@ -98,5 +121,6 @@ def sun_hours():
 
 if ranks == 1:
     lights_from_view()
+    light_types()
     sun_hours()
 pvshadows.finish()

@@ -82,15 +82,11 @@ void vtkPVLightVisibilityFilter::UpdateLights()
 // A point light is VTK's positional light with a cone of 90 degrees or more.
 void vtkPVLightVisibilityFilter::SetLightType(int type)
 {
+  this->LightType =
+    std::min(std::max(type, static_cast<int>(POINT)), static_cast<int>(DIRECTIONAL));
   vtkLight* light = this->ParameterLight;
-  light->SetPositional(type != DIRECTIONAL);
-  light->SetConeAngle(type == SPOT ? this->ParameterConeAngle : 180.0);
-}
-
-int vtkPVLightVisibilityFilter::GetLightType() const
-{
-  vtkLight* light = this->ParameterLight;
-  return !light->GetPositional() ? DIRECTIONAL : light->GetConeAngle() < 90.0 ? SPOT : POINT;
+  light->SetPositional(this->LightType != DIRECTIONAL);
+  light->SetConeAngle(this->LightType == SPOT ? this->LightConeAngle : 180.0);
 }
 
 void vtkPVLightVisibilityFilter::SetLightPosition(double x, double y, double z)
@@ -110,11 +106,8 @@ void vtkPVLightVisibilityFilter::SetLightRadius(double radius)
 
 void vtkPVLightVisibilityFilter::SetLightConeAngle(double degrees)
 {
-  this->ParameterConeAngle = degrees;
-  if (this->GetLightType() == SPOT)
-  {
-    this->ParameterLight->SetConeAngle(degrees);
-  }
+  this->LightConeAngle = degrees;
+  this->SetLightType(this->LightType);
 }
 
 void vtkPVLightVisibilityFilter::SetLightIntensity(double intensity)
@@ -254,7 +247,8 @@ void vtkPVLightVisibilityFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "LightsFrom: " << this->LightsFrom << "\n";
-  os << indent << "LightType: " << this->GetLightType() << "\n";
+  os << indent << "LightType: " << this->LightType << "\n";
+  os << indent << "LightConeAngle: " << this->LightConeAngle << "\n";
   os << indent << "ParaView lights: " << this->ParaViewLights->GetNumberOfItems() << "\n";
   os << indent << "Filter:\n";
   this->Filter->PrintSelf(os, indent.GetNextIndent());

@@ -68,10 +68,10 @@ public:
    * The light given as parameters: type (LightTypes, default POINT),
    * position (default 0, 0, 1), focal point (default 0, 0, 0), radius
    * (default 0: a point, hard shadows), spot cone angle (default 30) and
-   * intensity (default 1).
+   * intensity (default 1). A spot light's cone is under 90 degrees.
    */
   void SetLightType(int type);
-  int GetLightType() const;
+  vtkGetMacro(LightType, int);
   void SetLightPosition(double x, double y, double z);
   void SetLightFocalPoint(double x, double y, double z);
   void SetLightRadius(double radius);
@@ -124,9 +124,10 @@ private:
   void UpdateLights();
 
   int LightsFrom = PARAMETERS;
+  int LightType = POINT;
+  double LightConeAngle = 30.0;
   vtkNew<vtkLightVisibilityFilter> Filter;
   vtkNew<vtkLight> ParameterLight;
-  double ParameterConeAngle = 30.0;
   vtkNew<vtkLightCollection> ParaViewLights;
   vtkNew<vtkLightCollection> Lights; // what the inner filter reads
 };
