@@ -52,8 +52,9 @@
  * Split among processes (ParaView's pvbatch and pvserver ranks, each
  * holding its own pieces of the receiver and the casters; SetController()),
  * every process's opaque surfaces are gathered so that each casts on every
- * other's receiver, and a point's rays are drawn from its position, not its
- * id: each point reads what it would with all the data on one process.
+ * other's receiver (each process then holds every process's casting
+ * surfaces), and a point's rays are drawn from its position, not its id:
+ * each point reads what it would with all the data on one process.
  *
  * Errors (vtkErrorMacro, no output): no receiver, neither lights nor
  * SunHours, a receiver point that is not finite (or beyond float range:
