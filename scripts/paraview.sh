@@ -150,9 +150,11 @@ if ! xvfb "$build/pvpython" "$root/Testing/ParaView/test_client_server.py" "$plu
   exit 1
 fi
 wait "$server" || { cat "$parallel/pvserver.log"; exit 1; }
-# The README's example, as a user runs it.
+# The README's examples, as a user runs them.
 xvfb "$build/pvpython" --force-offscreen-rendering "$root/Examples/Python/paraview_shadows.py" \
   "$plugin" "$build/paraview_shadows.png"
+xvfb "$build/pvpython" --force-offscreen-rendering \
+  "$root/Examples/Python/paraview_light_visibility.py" "$plugin" "$build/paraview_light_visibility.png"
 echo "PLUGIN=$plugin"
 echo "PVPYTHON=$build/pvpython"
 echo "PVBATCH=$build/pvbatch"
