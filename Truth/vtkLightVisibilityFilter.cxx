@@ -324,57 +324,61 @@ int vtkLightVisibilityFilter::RequestData(
 {
   vtkPolyData* surface = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  if (!surface)
-  {
-    vtkErrorMacro(<< "no receiver: input 0 must be a vtkPolyData.");
-    return 0;
-  }
-  std::vector<vtkLight*> sources;
-  if (this->Lights)
-  {
-    vtkCollectionSimpleIterator it;
-    this->Lights->InitTraversal(it);
-    while (vtkLight* light = this->Lights->GetNextLight(it))
-    {
-      sources.push_back(light);
-    }
-  }
-  if (sources.empty() && !this->SunHours)
-  {
-    vtkErrorMacro(<< "no lights: SetLights() with at least one light, or SunHoursOn().");
-    return 0;
-  }
-  std::vector<vtkRayCastScene::Light> lights(sources.size());
+  std::vector<vtkRayCastScene::Light> lights;
   std::vector<Shading> shading;
-  for (size_t l = 0; l < sources.size(); ++l)
-  {
-    shading.emplace_back(sources[l]);
-    std::string error;
-    if (!vtkRayCastScene::MakeLight(sources[l], lights[l], error))
-    {
-      vtkErrorMacro(<< "light " << l << " " << error);
-      return 0;
-    }
-  }
   std::vector<SunStep> sun;
-  if (this->SunHours && !this->SunSteps(sun))
+  auto check = [&]() -> bool
   {
-    return 0;
-  }
-  const vtkIdType points = surface->GetNumberOfPoints();
-  bool valid = true;
-  for (vtkIdType i = 0; i < points && valid; ++i)
-  {
-    double p[3];
-    surface->GetPoint(i, p);
-    if (!vtkRayCastScene::Castable(glm::dvec3(p[0], p[1], p[2])))
+    if (!surface)
     {
-      vtkErrorMacro(<< "receiver point " << i << " (" << p[0] << ", " << p[1] << ", " << p[2]
-                    << ") is not finite or lies beyond float range.");
-      valid = false;
+      vtkErrorMacro(<< "no receiver: input 0 must be a vtkPolyData.");
+      return false;
     }
-  }
-  // Split among processes, all stop when one refuses its piece (rather
+    std::vector<vtkLight*> sources;
+    if (this->Lights)
+    {
+      vtkCollectionSimpleIterator it;
+      this->Lights->InitTraversal(it);
+      while (vtkLight* light = this->Lights->GetNextLight(it))
+      {
+        sources.push_back(light);
+      }
+    }
+    if (sources.empty() && !this->SunHours)
+    {
+      vtkErrorMacro(<< "no lights: SetLights() with at least one light, or SunHoursOn().");
+      return false;
+    }
+    lights.resize(sources.size());
+    for (size_t l = 0; l < sources.size(); ++l)
+    {
+      shading.emplace_back(sources[l]);
+      std::string error;
+      if (!vtkRayCastScene::MakeLight(sources[l], lights[l], error))
+      {
+        vtkErrorMacro(<< "light " << l << " " << error);
+        return false;
+      }
+    }
+    if (this->SunHours && !this->SunSteps(sun))
+    {
+      return false;
+    }
+    for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      surface->GetPoint(i, p);
+      if (!vtkRayCastScene::Castable(glm::dvec3(p[0], p[1], p[2])))
+      {
+        vtkErrorMacro(<< "receiver point " << i << " (" << p[0] << ", " << p[1] << ", " << p[2]
+                      << ") is not finite or lies beyond float range.");
+        return false;
+      }
+    }
+    return true;
+  };
+  bool valid = check();
+  // Split among processes, all stop when one refuses its input (rather
   // than wait for it in the exchange below).
   vtkMultiProcessController* controller = this->Controller;
   const bool shared = controller && controller->GetNumberOfProcesses() > 1;
@@ -385,7 +389,7 @@ int vtkLightVisibilityFilter::RequestData(
     controller->AllReduce(&mine, &all, 1, vtkCommunicator::MIN_OP);
     if (valid && !all)
     {
-      vtkErrorMacro(<< "another process's receiver was refused.");
+      vtkErrorMacro(<< "another process refused its input.");
     }
     valid = all != 0;
   }

@@ -54,7 +54,13 @@
  * every process's opaque surfaces are gathered so that each casts on every
  * other's receiver (each process then holds every process's casting
  * surfaces), and a point's rays are drawn from its position, not its id:
- * each point reads what it would with all the data on one process.
+ * each point reads what it would with all the data on one process, given
+ * its normal. Where the receiver has no normals they are computed from each
+ * piece's own cells, so that points on the seams between pieces may differ:
+ * give the receiver its normals first (vtkPolyDataNormals on the whole, or
+ * ParaView's Generate Surface Normals) where the seams matter. Every
+ * process runs the same lights: a camera light, which each process moves
+ * with its own camera, shadows alike only where every process renders.
  *
  * Errors (vtkErrorMacro, no output): no receiver, neither lights nor
  * SunHours, a receiver point that is not finite (or beyond float range:

@@ -130,14 +130,15 @@ rm -rf "$parallel"
 mkdir -p "$parallel"
 xvfb "$build/pvbatch" --force-offscreen-rendering "$root/Testing/ParaView/test_parallel.py" \
   "$plugin" "$parallel"
-xvfb mpirun --allow-run-as-root --oversubscribe -np 2 "$build/pvbatch" --force-offscreen-rendering \
-  "$root/Testing/ParaView/test_parallel.py" "$plugin" "$parallel"
+xvfb timeout 300 mpirun --allow-run-as-root --oversubscribe -np 2 "$build/pvbatch" \
+  --force-offscreen-rendering "$root/Testing/ParaView/test_parallel.py" "$plugin" "$parallel"
 # The Light Visibility filter: one rank's values checked, then two ranks'
 # against them.
 xvfb "$build/pvbatch" --force-offscreen-rendering "$root/Testing/ParaView/test_light_visibility.py" \
   "$plugin" "$parallel"
-xvfb mpirun --allow-run-as-root --oversubscribe -np 2 "$build/pvbatch" --force-offscreen-rendering \
-  "$root/Testing/ParaView/test_light_visibility.py" "$plugin" "$parallel"
+xvfb timeout 300 mpirun --allow-run-as-root --oversubscribe -np 2 "$build/pvbatch" \
+  --force-offscreen-rendering "$root/Testing/ParaView/test_light_visibility.py" "$plugin" \
+  "$parallel"
 # Through a pvserver on two ranks, on a free port; the server exits when
 # the client leaves (timeout: in case the client never came).
 port=$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("localhost", 0)); print(s.getsockname()[1])')

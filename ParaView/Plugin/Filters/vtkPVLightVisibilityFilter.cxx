@@ -2,7 +2,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkPVLightVisibilityFilter.h"
 
+#include "vtkAppendPolyData.h"
 #include "vtkCallbackCommand.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkCompositeDataSetRange.h"
 #include "vtkExecutive.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -12,10 +15,46 @@
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
 #include "vtkShadowLightSize.h"
+#include "vtkSmartPointer.h"
 
 #include <algorithm>
 
 vtkStandardNewMacro(vtkPVLightVisibilityFilter);
+
+namespace
+{
+// `data` as one vtkPolyData: itself, or a composite's leaves appended (as
+// Extract Surface makes of multiblock data), so that every block shadows
+// every other and each rank runs the filter once; null for other data.
+vtkSmartPointer<vtkPolyData> Surfaces(vtkDataObject* data)
+{
+  if (auto* polyData = vtkPolyData::SafeDownCast(data))
+  {
+    return polyData;
+  }
+  auto* composite = vtkCompositeDataSet::SafeDownCast(data);
+  if (!composite)
+  {
+    return nullptr;
+  }
+  vtkNew<vtkAppendPolyData> append;
+  for (vtkDataObject* leaf : vtk::Range(composite))
+  {
+    auto* polyData = vtkPolyData::SafeDownCast(leaf);
+    if (!polyData)
+    {
+      return nullptr;
+    }
+    append->AddInputData(polyData);
+  }
+  if (append->GetNumberOfInputConnections(0) == 0)
+  {
+    return vtkSmartPointer<vtkPolyData>::New();
+  }
+  append->Update();
+  return append->GetOutput();
+}
+}
 
 //------------------------------------------------------------------------------
 vtkPVLightVisibilityFilter::vtkPVLightVisibilityFilter()
@@ -33,7 +72,8 @@ vtkPVLightVisibilityFilter::~vtkPVLightVisibilityFilter() = default;
 //------------------------------------------------------------------------------
 int vtkPVLightVisibilityFilter::FillInputPortInformation(int port, vtkInformation* info)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
   if (port == 1)
   {
     info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
@@ -216,12 +256,29 @@ vtkMTimeType vtkPVLightVisibilityFilter::GetMTime()
 int vtkPVLightVisibilityFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  // (The same data type on every rank: all refuse together, before the
+  // inner filter's exchange.)
   vtkLightVisibilityFilter* filter = this->Filter;
-  filter->SetInputData(vtkPolyData::GetData(inputVector[0]));
+  vtkSmartPointer<vtkPolyData> receiver = Surfaces(vtkDataObject::GetData(inputVector[0]));
+  if (!receiver)
+  {
+    vtkErrorMacro(<< "the input must be polygons: a vtkPolyData, or a composite of them.");
+    return 0;
+  }
+  filter->SetInputData(receiver);
   filter->RemoveAllCasters();
   for (int c = 0; c < inputVector[1]->GetNumberOfInformationObjects(); ++c)
   {
-    filter->AddCasterData(vtkPolyData::GetData(inputVector[1], c));
+    vtkSmartPointer<vtkPolyData> caster = Surfaces(vtkDataObject::GetData(inputVector[1], c));
+    if (!caster)
+    {
+      vtkErrorMacro(<< "caster " << c
+                    << " must be polygons: a vtkPolyData, or a composite of them.");
+      filter->SetInputData(nullptr);
+      filter->RemoveAllCasters();
+      return 0;
+    }
+    filter->AddCasterData(caster);
   }
   // Its progress as this filter's.
   vtkNew<vtkCallbackCommand> progress;

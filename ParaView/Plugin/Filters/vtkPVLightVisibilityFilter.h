@@ -14,10 +14,12 @@
  *   of LightRadius (world units; degrees for a directional light),
  *   LightConeAngle (a spot light's) and LightIntensity;
  * - Lights (1): ParaView's light proxies given to AddLight() (in Python
- *   `Lights=view.AdditionalLights`), each with its Radius, which
+ *   `Lights=list(view.AdditionalLights)`), each with its Radius, which
  *   vtkSMLightVisibilityProxy hands to SetLightRadius() as ParaView without
  *   ray tracing drops it;
  * - None (2): the sun only (SunHours).
+ * Inputs may be composites of polygons (Extract Surface of multiblock data):
+ * their blocks are merged into one surface, and one output.
  * The rest is vtkLightVisibilityFilter's, under the same names and with the
  * same defaults. Across MPI ranks (pvbatch, pvserver), each rank's piece is
  * shadowed by every rank's, through the global controller.

@@ -3,6 +3,7 @@
 #include "vtkSMLightVisibilityProxy.h"
 
 #include "vtkClientServerStream.h"
+#include "vtkCommand.h"
 #include "vtkObjectFactory.h"
 #include "vtkSMPropertyHelper.h"
 
@@ -11,7 +12,10 @@ vtkStandardNewMacro(vtkSMLightVisibilityProxy);
 //------------------------------------------------------------------------------
 vtkSMLightVisibilityProxy::vtkSMLightVisibilityProxy() = default;
 
-vtkSMLightVisibilityProxy::~vtkSMLightVisibilityProxy() = default;
+vtkSMLightVisibilityProxy::~vtkSMLightVisibilityProxy()
+{
+  this->StopWatching();
+}
 
 //------------------------------------------------------------------------------
 void vtkSMLightVisibilityProxy::HandOverRadius(vtkSMProxy* light)
@@ -27,32 +31,53 @@ void vtkSMLightVisibilityProxy::HandOverRadius(vtkSMProxy* light)
 }
 
 //------------------------------------------------------------------------------
-void vtkSMLightVisibilityProxy::UpdateVTKObjects()
+void vtkSMLightVisibilityProxy::StopWatching()
 {
-  this->Superclass::UpdateVTKObjects();
-  if (this->GetProperty("Lights"))
+  for (const auto& watched : this->Watched)
   {
-    vtkSMPropertyHelper lights(this, "Lights");
-    for (unsigned int i = 0; i < lights.GetNumberOfElements(); ++i)
+    if (vtkSMProxy* light = watched.first)
     {
-      this->HandOverRadius(lights.GetAsProxy(i));
+      light->RemoveObserver(watched.second);
+    }
+  }
+  this->Watched.clear();
+}
+
+void vtkSMLightVisibilityProxy::WatchLights()
+{
+  this->StopWatching();
+  if (!this->GetProperty("Lights"))
+  {
+    return;
+  }
+  vtkSMPropertyHelper lights(this, "Lights");
+  for (unsigned int i = 0; i < lights.GetNumberOfElements(); ++i)
+  {
+    if (vtkSMProxy* light = lights.GetAsProxy(i))
+    {
+      const unsigned long tag = light->AddObserver(
+        vtkCommand::ModifiedEvent, this, &vtkSMLightVisibilityProxy::LightModified);
+      this->Watched.emplace_back(light, tag);
+      this->HandOverRadius(light);
     }
   }
 }
 
-//------------------------------------------------------------------------------
-void vtkSMLightVisibilityProxy::MarkDirtyFromProducer(
-  vtkSMProxy* modifiedProxy, vtkSMProxy* producer, vtkSMProperty* property)
+void vtkSMLightVisibilityProxy::LightModified(vtkObject* light, unsigned long, void*)
 {
-  if (property && property == this->GetProperty("Lights"))
-  {
-    this->HandOverRadius(producer);
-  }
-  this->Superclass::MarkDirtyFromProducer(modifiedProxy, producer, property);
+  this->HandOverRadius(vtkSMProxy::SafeDownCast(light));
+}
+
+//------------------------------------------------------------------------------
+void vtkSMLightVisibilityProxy::UpdateVTKObjects()
+{
+  this->Superclass::UpdateVTKObjects();
+  this->WatchLights();
 }
 
 //------------------------------------------------------------------------------
 void vtkSMLightVisibilityProxy::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "Lights watched: " << this->Watched.size() << "\n";
 }
