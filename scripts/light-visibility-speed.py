@@ -8,6 +8,12 @@ each run's seconds, rays a second and peak memory. Run by
 scripts/light-visibility-speed.sh.
 
     python3 scripts/light-visibility-speed.py [--points N] [--triangles N] [--samples N]
+    mpirun -np 2 python3 -m mpi4py scripts/light-visibility-speed.py --split [...]
+
+With --split, under MPI: the ground and the isosurface's triangles dealt
+out among the processes (the ground in bands, the triangles in turn), as
+ParaView's ranks hold pieces; the filter gathers them. Process 0 prints,
+the seconds those of the slowest process.
 """
 import argparse
 import math
@@ -15,11 +21,11 @@ import resource
 import time
 
 import numpy as np
-from vtkmodules.vtkCommonDataModel import vtkImageData
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkImageData, vtkPolyData
 from vtkmodules.vtkFiltersCore import vtkFlyingEdges3D
 from vtkmodules.vtkFiltersSources import vtkPlaneSource
 from vtkmodules.vtkRenderingCore import vtkLight, vtkLightCollection
-from vtkmodules.util.numpy_support import numpy_to_vtk
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 
 from vtksoftshadows import vtkLightVisibilityFilter, vtkShadowLightSize
 
@@ -48,21 +54,48 @@ def gyroid(triangles):
     return contour.GetOutput()
 
 
+def piece(mesh, rank, ranks):
+    """Every ranks-th triangle of `mesh` from the rank-th (all its points)."""
+    triangles = vtk_to_numpy(mesh.GetPolys().GetConnectivityArray()).reshape(-1, 3)[rank::ranks]
+    cells = vtkCellArray()
+    cells.SetData(numpy_to_vtk(np.arange(0, 3 * len(triangles) + 1, 3, dtype=np.int64), deep=1),
+                  numpy_to_vtk(triangles.ravel().astype(np.int64), deep=1))
+    out = vtkPolyData()
+    out.SetPoints(mesh.GetPoints())
+    out.SetPolys(cells)
+    return out
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--points", type=int, default=1000000)
     parser.add_argument("--triangles", type=int, default=1000000)
     parser.add_argument("--samples", type=int, default=64)
+    parser.add_argument("--split", action="store_true")
     args = parser.parse_args()
+    rank, ranks, controller = 0, 1, None
+    total = int  # a count over every process
+    if args.split:
+        from mpi4py import MPI  # initializes MPI for vtkMPIController
+        total = MPI.COMM_WORLD.allreduce
+        from vtkmodules.vtkParallelCore import vtkMultiProcessController
+        from vtkmodules.vtkParallelMPI import vtkMPIController
+        controller = vtkMPIController()
+        controller.Initialize()
+        vtkMultiProcessController.SetGlobalController(controller)
+        rank, ranks = controller.GetLocalProcessId(), controller.GetNumberOfProcesses()
 
     sheet = gyroid(args.triangles)
     side = max(1, int(round(math.sqrt(args.points))) - 1)
     plane = vtkPlaneSource()
-    plane.SetOrigin(-3.0, 0.0, -3.0)
-    plane.SetPoint1(-3.0, 0.0, 3.0)
-    plane.SetPoint2(3.0, 0.0, -3.0)
-    plane.SetResolution(side, side)
+    band = 6.0 / ranks  # this process's band of the ground in x
+    plane.SetOrigin(-3.0 + rank * band, 0.0, -3.0)
+    plane.SetPoint1(-3.0 + rank * band, 0.0, 3.0)
+    plane.SetPoint2(-3.0 + (rank + 1) * band, 0.0, -3.0)
+    plane.SetResolution(side, max(1, side // ranks))
     plane.Update()
+    if ranks > 1:
+        sheet = piece(sheet, rank, ranks)
     light = vtkLight()
     light.SetPositional(True)
     light.SetPosition(1.0, 5.0, 1.0)
@@ -72,7 +105,9 @@ def main():
     lights = vtkLightCollection()
     lights.AddItem(light)
 
-    runs = [("ground", plane.GetOutput(), sheet), ("isosurface", sheet, None)]
+    runs = [("ground", plane.GetOutput(), sheet)]
+    if ranks == 1:  # (a piece of the sheet holds all its points)
+        runs.append(("isosurface", sheet, None))
     for name, receiver, caster in runs:
         f = vtkLightVisibilityFilter()
         f.SetInputData(receiver)
@@ -80,18 +115,28 @@ def main():
             f.AddCasterData(caster)
         f.SetLights(lights)
         f.SetSamples(args.samples)
+        if controller:
+            controller.Barrier()
         start = time.perf_counter()
         f.Update()
+        if controller:
+            controller.Barrier()
         seconds = time.perf_counter() - start
-        points = receiver.GetNumberOfPoints()
-        triangles = sheet.GetNumberOfPolys() + (receiver.GetNumberOfPolys() if caster else 0)
         visible = f.GetOutput().GetPointData().GetArray("LightVisibility")
-        mean = float(np.mean([visible.GetValue(i) for i in range(0, points, 101)]))
+        sampled = [visible.GetValue(i) for i in range(0, receiver.GetNumberOfPoints(), 101)]
+        mean = total(float(np.sum(sampled))) / max(1, total(len(sampled)))
+        points = total(receiver.GetNumberOfPoints())
+        triangles = total(sheet.GetNumberOfPolys() + (receiver.GetNumberOfPolys() if caster else 0))
         peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
         rate = points * args.samples / seconds / 1e6
-        print("%s: %d receiver points, %d triangles, %d rays a point: %.2f s, %.1f M rays/s, "
+        if rank > 0:
+            continue
+        print("%s%s: %d receiver points, %d triangles, %d rays a point: %.2f s, %.1f M rays/s, "
               "mean visibility %.3f, peak %.0f MB"
-              % (name, points, triangles, args.samples, seconds, rate, mean, peak))
+              % (name, " (%d processes, process 0's memory)" % ranks if ranks > 1 else "",
+                 points, triangles, args.samples, seconds, rate, mean, peak))
+    if controller:
+        controller.Finalize(1)
 
 
 if __name__ == "__main__":

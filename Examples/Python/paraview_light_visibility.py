@@ -57,7 +57,14 @@ visibility = LightVisibility(Input=floor, Casters=[surface], LightsFrom="Lights"
 floor_display = Show(visibility, view)
 ColorBy(floor_display, ("POINTS", "LightVisibility"))
 colours = GetColorTransferFunction("LightVisibility")
-colours.ApplyPreset("Inferno (matplotlib)", True)
+# ParaView 5.11 and 5.13 name the preset "Inferno (matplotlib)", 6 "Inferno"
+# (an unknown name: False from 5.11, an error from 6.1).
+for preset in ("Inferno (matplotlib)", "Inferno"):
+    try:
+        if colours.ApplyPreset(preset, True):
+            break
+    except RuntimeError:
+        pass
 colours.RescaleTransferFunction(0.0, 1.0)
 floor_display.SetScalarBarVisibility(view, True)
 bar = GetScalarBar(colours, view)
