@@ -64,15 +64,25 @@ unsigned int PositionKey(const glm::dvec3& p)
   return u[0] * 73856093U ^ u[1] * 19349663U ^ u[2] * 83492791U;
 }
 
-// Only what casts, to send to the other processes: points, polygons and
-// strips.
-void AddShape(vtkAppendPolyData* shapes, vtkPolyData* data)
+// Only what casts, to send to the other processes: the surfaces' points,
+// polygons and strips, as one mesh.
+vtkSmartPointer<vtkPolyData> Shapes(const std::vector<vtkPolyData*>& surfaces)
 {
-  vtkNew<vtkPolyData> shape;
-  shape->SetPoints(data->GetPoints());
-  shape->SetPolys(data->GetPolys());
-  shape->SetStrips(data->GetStrips());
-  shapes->AddInputData(shape);
+  vtkNew<vtkAppendPolyData> shapes;
+  for (vtkPolyData* data : surfaces)
+  {
+    vtkNew<vtkPolyData> shape;
+    shape->SetPoints(data->GetPoints());
+    shape->SetPolys(data->GetPolys());
+    shape->SetStrips(data->GetStrips());
+    shapes->AddInputData(shape);
+  }
+  if (surfaces.empty())
+  {
+    return vtkSmartPointer<vtkPolyData>::New();
+  }
+  shapes->Update();
+  return shapes->GetOutput();
 }
 
 // The points and their normals: the receiver's own, else computed without
@@ -415,12 +425,12 @@ int vtkLightVisibilityFilter::RequestData(
       high = glm::max(high, glm::dvec3(b[1], b[3], b[5]));
     }
   };
-  vtkNew<vtkAppendPolyData> shapes;
+  std::vector<vtkPolyData*> casting; // this process's, for the others
   scene.AddPolyData(surface, world, this->ReceiverCasts);
   extend(surface);
   if (this->ReceiverCasts)
   {
-    AddShape(shapes, surface);
+    casting.push_back(surface);
   }
   const int casters = this->GetNumberOfInputConnections(1);
   for (int c = 0; c < casters; ++c)
@@ -432,18 +442,13 @@ int vtkLightVisibilityFilter::RequestData(
     }
     scene.AddPolyData(caster, world, true);
     extend(caster);
-    AddShape(shapes, caster);
+    casting.push_back(caster);
   }
   if (shared)
   {
     // Every other process's receiver (when it casts) and casters cast here.
-    if (shapes->GetNumberOfInputConnections(0) == 0)
-    {
-      shapes->AddInputData(vtkNew<vtkPolyData>());
-    }
-    shapes->Update();
     std::vector<vtkSmartPointer<vtkDataObject>> gathered;
-    controller->AllGather(shapes->GetOutput(), gathered);
+    controller->AllGather(Shapes(casting), gathered);
     const int me = controller->GetLocalProcessId();
     for (size_t p = 0; p < gathered.size(); ++p)
     {
