@@ -61,6 +61,18 @@ def check_alike(image, reference, what, mean, share):
               what, off.mean(), 100 * (off > 24).mean()))
 
 
+def scene_light(view, position, focal_point, cone_angle, radius):
+    """A positional ParaView light in `view`, in scene coordinates."""
+    light = AddLight(view=view)
+    light.Coords = "Scene"
+    light.Type = "Positional"
+    light.Position = position
+    light.FocalPoint = focal_point
+    light.ConeAngle = cone_angle
+    light.Radius = radius
+    return light
+
+
 def scene(proxy, technique=None, ball_resolution=32, light_position=LIGHT, ball_center=BALL):
     """A view of the ball over the plane, lit by a spot light only. Returns
     the view, the light and the ball's source."""
@@ -78,13 +90,8 @@ def scene(proxy, technique=None, ball_resolution=32, light_position=LIGHT, ball_
                   PhiResolution=ball_resolution)
     Show(plane, view)
     Show(ball, view)
-    light = AddLight(view=view)
-    light.Coords = "Scene"
-    light.Type = "Positional"
-    light.Position = light_position
-    light.FocalPoint = [0.0, 0.0, 0.0]
-    light.ConeAngle = 60
-    light.Radius = LIGHT_RADIUS if proxy != "RenderView" else 0.0
+    light = scene_light(view, light_position, [0.0, 0.0, 0.0], 60,
+                        LIGHT_RADIUS if proxy != "RenderView" else 0.0)
     Render(view)  # the first render resets the camera: set it after
     view.CameraPosition = [0, 4.5, 5.5]
     view.CameraFocalPoint = [0, 0.3, 0]
@@ -155,14 +162,7 @@ def visibility_scene():
 
 def visibility_light(view, radius=0.3):
     """A ParaView light in `view` where the parameters put the light."""
-    light = AddLight(view=view)
-    light.Coords = "Scene"
-    light.Type = "Positional"
-    light.Position = VISIBILITY_LIGHT
-    light.FocalPoint = VISIBILITY_FOCAL_POINT
-    light.ConeAngle = 90
-    light.Radius = radius
-    return light
+    return scene_light(view, VISIBILITY_LIGHT, VISIBILITY_FOCAL_POINT, 90, radius)
 
 
 def visibility_values(filter, array="LightVisibility"):

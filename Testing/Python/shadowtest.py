@@ -421,47 +421,41 @@ def disc_overlap(r1, r2, d):
     return np.where(lens, lens_area, area)
 
 
-def ball_light_visibility(points, center, light_position, light_radius, ball_radius=BALL_RADIUS):
-    """Closed form of what each of `points` sees of a spherical light past a
-    ball: 1 - the share of the light's disc the ball's disc covers (angular
-    radii)."""
+def past_ball(points, center, to_light, alpha, ball_radius=BALL_RADIUS):
+    """What each of `points` sees of a light of angular radius `alpha`
+    towards the unit directions `to_light`, past a ball: 1 - the share of the
+    light's disc the ball's disc covers (angular radii; the small-angle plane
+    of directions)."""
     to_ball = np.asarray(center, float) - points
     ball_distance = np.linalg.norm(to_ball, axis=-1)
     beta = np.arcsin(ball_radius / ball_distance)
-    to_light = np.asarray(light_position, float) - points
-    distance = np.linalg.norm(to_light, axis=-1)
-    alpha = np.arcsin(light_radius / distance)
-    cosine = np.sum(to_light * to_ball, axis=-1) / (distance * ball_distance)
+    cosine = np.sum(to_light * to_ball, axis=-1) / ball_distance
     gamma = np.arccos(np.clip(cosine, -1.0, 1.0))
     covered = disc_overlap(alpha, beta, gamma) / (math.pi * alpha * alpha)
     return 1.0 - np.clip(covered, 0.0, 1.0)
 
 
+def ball_light_visibility(points, center, light_position, light_radius, ball_radius=BALL_RADIUS):
+    """past_ball() for a spherical light of `light_radius` at `light_position`."""
+    to_light = np.asarray(light_position, float) - points
+    distance = np.linalg.norm(to_light, axis=-1)
+    return past_ball(points, center, to_light / distance[..., None],
+                     np.arcsin(light_radius / distance), ball_radius)
+
+
 def ball_visibility(scene):
-    """Closed form of the ball scene's ground visibility: the share of the
-    light's disc, as seen from each ground point, that the ball's disc does
-    not cover (angular radii; the small-angle plane of directions).
+    """Closed form of the ball scene's ground visibility (past_ball()).
     Spot and point lights: a sphere of `radius`; directional: a cone of
     that many degrees around `direction`."""
     points, visible, _ = ground_points(scene)
-    ball = np.array(scene["actors"][1]["position"], float)
+    ball = scene["actors"][1]["position"]
     light = scene["lights"][0]
-    to_ball = ball - points
-    ball_distance = np.linalg.norm(to_ball, axis=-1)
-    beta = np.arcsin(BALL_RADIUS / ball_distance)
-    if light["type"] == "directional":
-        to_light = -np.array(light["direction"], float)
-        to_light = np.broadcast_to(to_light / np.linalg.norm(to_light), points.shape)
-        alpha = np.full(points.shape[:2], math.radians(light["radius"]))
-    else:
-        to_light = np.array(light["position"], float) - points
-        distance = np.linalg.norm(to_light, axis=-1)
-        alpha = np.arcsin(light["radius"] / distance)
-        to_light = to_light / distance[..., None]
-    cosine = np.sum(to_light * to_ball, axis=-1) / ball_distance
-    gamma = np.arccos(np.clip(cosine, -1.0, 1.0))
-    covered = disc_overlap(alpha, beta, gamma) / (math.pi * alpha * alpha)
-    return 1.0 - np.clip(covered, 0.0, 1.0), visible
+    if light["type"] != "directional":
+        return ball_light_visibility(points, ball, light["position"], light["radius"]), visible
+    to_light = -np.array(light["direction"], float)
+    to_light = np.broadcast_to(to_light / np.linalg.norm(to_light), points.shape)
+    alpha = np.full(points.shape[:2], math.radians(light["radius"]))
+    return past_ball(points, ball, to_light, alpha), visible
 
 
 # Meshes a silhouette-based technique's topology can describe only in part,
